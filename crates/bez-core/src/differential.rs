@@ -1,0 +1,131 @@
+//! Curvature and torsion of Bézier curves.
+
+use nalgebra::SVector;
+
+use crate::curve::BezierCurve;
+use crate::error::{CoreError, check_unit};
+
+/// Relative size below which a derivative counts as zero (times the control polygon's scale).
+const DEGENERATE: f64 = 1e-12;
+
+impl<const D: usize> BezierCurve<D> {
+    /// Scale of the control polygon: the largest |Pᵢ − P₀| (1 for a single point).
+    fn scale(&self) -> f64 {
+        let p0 = self.start();
+        let s = self
+            .points()
+            .iter()
+            .map(|p| (p - p0).norm())
+            .fold(0.0, f64::max);
+        if s > 0.0 { s } else { 1.0 }
+    }
+
+    fn tangent_checked(&self, t: f64, k: usize) -> Result<Vec<SVector<f64, D>>, CoreError> {
+        check_unit("t", t)?;
+        let d = self.eval_derivatives_unchecked(t, k);
+        let n = self.degree().max(1) as f64;
+        if d[1].norm() <= DEGENERATE * n * self.scale() {
+            return Err(CoreError::ZeroTangent { t });
+        }
+        Ok(d)
+    }
+
+    /// Unsigned curvature κ(t) = |B' ∧ B''| / |B'|³ in any dimension.
+    ///
+    /// |B' ∧ B''|² = |B'|² |B''|² − (B'·B'')² (Lagrange's identity).
+    ///
+    /// # Errors
+    /// [`CoreError::ParameterOutOfRange`] for t ∉ [0, 1]; [`CoreError::ZeroTangent`] where B'
+    /// vanishes (relative to the control polygon's size).
+    pub fn curvature(&self, t: f64) -> Result<f64, CoreError> {
+        let d = self.tangent_checked(t, 2)?;
+        let (a, b) = (d[1], d[2]);
+        let an = a.norm();
+        let wedge2 = (a.norm_squared() * b.norm_squared() - a.dot(&b).powi(2)).max(0.0);
+        Ok(wedge2.sqrt() / (an * an * an))
+    }
+}
+
+impl BezierCurve<2> {
+    /// Signed curvature κ(t) = (x'y'' − y'x'') / |B'|³ (positive when turning left).
+    ///
+    /// # Errors
+    /// As [`BezierCurve::curvature`].
+    pub fn signed_curvature(&self, t: f64) -> Result<f64, CoreError> {
+        let d = self.tangent_checked(t, 2)?;
+        let (a, b) = (d[1], d[2]);
+        let an = a.norm();
+        Ok((a.x * b.y - a.y * b.x) / (an * an * an))
+    }
+}
+
+impl BezierCurve<3> {
+    /// Torsion τ(t) = (B' × B'') · B''' / |B' × B''|².
+    ///
+    /// # Errors
+    /// [`CoreError::ParameterOutOfRange`], [`CoreError::ZeroTangent`], and
+    /// [`CoreError::ZeroCurvature`] where B' × B'' vanishes (torsion undefined).
+    pub fn torsion(&self, t: f64) -> Result<f64, CoreError> {
+        let d = self.tangent_checked(t, 3)?;
+        let c = d[1].cross(&d[2]);
+        let c2 = c.norm_squared();
+        let scale = d[1].norm() * d[2].norm();
+        if c2.sqrt() <= DEGENERATE * scale || c2 == 0.0 {
+            return Err(CoreError::ZeroCurvature { t });
+        }
+        Ok(c.dot(&d[3]) / c2)
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use nalgebra::{Vector2, Vector3};
+
+    #[test]
+    fn parabola_curvature_matches_analytic() {
+        // y = x² on x ∈ [−1, 1] as a quadratic: P = (−1,1), (0,−1), (1,1); κ = 2/(1+4x²)^{3/2}.
+        let c = BezierCurve::new(vec![
+            Vector2::new(-1.0, 1.0),
+            Vector2::new(0.0, -1.0),
+            Vector2::new(1.0, 1.0),
+        ])
+        .unwrap();
+        for k in 0..=10 {
+            let t = k as f64 / 10.0;
+            let x = 2.0 * t - 1.0;
+            let exact = 2.0 / (1.0 + 4.0 * x * x).powf(1.5);
+            assert!((c.signed_curvature(t).unwrap() - exact).abs() < 1e-13);
+            assert!((c.curvature(t).unwrap() - exact).abs() < 1e-13);
+        }
+    }
+
+    #[test]
+    fn twisted_cubic_torsion_matches_analytic() {
+        // (t, t², t³): power basis → Bernstein: P0 = 0, P1 = (1/3,0,0), P2 = (2/3,1/3,0), P3 = (1,1,1).
+        let c = BezierCurve::new(vec![
+            Vector3::new(0.0, 0.0, 0.0),
+            Vector3::new(1.0 / 3.0, 0.0, 0.0),
+            Vector3::new(2.0 / 3.0, 1.0 / 3.0, 0.0),
+            Vector3::new(1.0, 1.0, 1.0),
+        ])
+        .unwrap();
+        for k in 0..=10 {
+            let t = k as f64 / 10.0;
+            // τ = 3 / (9t⁴ + 9t² + 1), κ = 2 sqrt(9t⁴ + 9t² + 1) / (1 + 4t² + 9t⁴)^{3/2}.
+            let q = 9.0 * t.powi(4) + 9.0 * t * t + 1.0;
+            let tau = 3.0 / q;
+            let kappa = 2.0 * q.sqrt() / (1.0 + 4.0 * t * t + 9.0 * t.powi(4)).powf(1.5);
+            assert!((c.torsion(t).unwrap() - tau).abs() < 1e-12);
+            assert!((c.curvature(t).unwrap() - kappa).abs() < 1e-12);
+        }
+    }
+
+    #[test]
+    fn degenerate_tangent_and_curvature_are_errors() {
+        let c = BezierCurve::new(vec![Vector2::new(1.0, 1.0); 3]).unwrap();
+        assert_eq!(c.curvature(0.5), Err(CoreError::ZeroTangent { t: 0.5 }));
+        let line = BezierCurve::new(vec![Vector3::zeros(), Vector3::new(1.0, 2.0, 3.0)]).unwrap();
+        assert_eq!(line.torsion(0.2), Err(CoreError::ZeroCurvature { t: 0.2 }));
+    }
+}

@@ -1,0 +1,67 @@
+//! `cargo xtask`: the project's automation.
+//!
+//! - `cargo xtask tables [--check] [--only PAPER]` recomputes every paper's tables, prints them,
+//!   and writes `docs/results/<table>.md` and `.json`; with `--check` it compares the recomputed
+//!   deterministic values with the committed JSON instead and fails with a readable diff.
+//! - `cargo xtask figures [--only PAPER]` writes the papers' figures as SVG to `docs/figures/`.
+#![allow(
+    clippy::print_stdout,
+    clippy::print_stderr,
+    reason = "a command-line tool talks to its user"
+)]
+
+mod figures;
+mod papers;
+mod plot;
+mod tables;
+
+use std::path::PathBuf;
+use std::process::ExitCode;
+
+/// The error type of every xtask step.
+pub(crate) type DynError = Box<dyn std::error::Error>;
+
+fn main() -> ExitCode {
+    match try_main() {
+        Ok(()) => ExitCode::SUCCESS,
+        Err(e) => {
+            eprintln!("error: {e}");
+            ExitCode::FAILURE
+        }
+    }
+}
+
+fn try_main() -> Result<(), DynError> {
+    let args: Vec<String> = std::env::args().skip(1).collect();
+    let args: Vec<&str> = args.iter().map(String::as_str).collect();
+    let (cmd, rest) = args.split_first().map_or(("", &[][..]), |(c, r)| (*c, r));
+    let mut check = false;
+    let mut only: Option<&str> = None;
+    let mut it = rest.iter();
+    while let Some(&a) = it.next() {
+        match a {
+            "--check" => check = true,
+            "--only" => only = Some(it.next().copied().ok_or("--only needs a paper name")?),
+            other => return Err(format!("unknown argument `{other}`\n{HELP}").into()),
+        }
+    }
+    match cmd {
+        "tables" => tables::run(check, only),
+        "figures" if !check => figures::run(only),
+        _ => {
+            println!("{HELP}");
+            Ok(())
+        }
+    }
+}
+
+const HELP: &str = "usage:
+  cargo xtask tables [--check] [--only PAPER]   recompute the papers' tables (--check: compare with docs/results)
+  cargo xtask figures [--only PAPER]            write the papers' figures to docs/figures
+papers: bez-subdiv, lambda-bezier, class-a, subdiv-fit, pde-bezier";
+
+/// The workspace root (the parent of this crate's directory).
+pub(crate) fn project_root() -> PathBuf {
+    let dir = PathBuf::from(env!("CARGO_MANIFEST_DIR"));
+    dir.parent().map_or(dir.clone(), PathBuf::from)
+}

@@ -1,0 +1,48 @@
+//! The registry of papers: each paper's module contributes its tables and figures.
+//!
+//! To add a paper's experiments, write `papers/<crate>.rs` with `tables()` and/or
+//! `figures(dir)` and list it in [`PAPERS`].
+
+use std::path::{Path, PathBuf};
+
+mod bez_core;
+
+use crate::DynError;
+use crate::tables::Table;
+
+/// Computes a paper's tables.
+pub(crate) type TablesFn = fn() -> Result<Vec<Table>, DynError>;
+/// Writes a paper's figures into the given directory and returns the files written.
+pub(crate) type FiguresFn = fn(&Path) -> Result<Vec<PathBuf>, DynError>;
+
+/// One paper's experiments.
+#[derive(Debug)]
+pub(crate) struct Paper {
+    /// The crate name, also the `--only` name and the figures' sub-directory.
+    pub(crate) name: &'static str,
+    pub(crate) tables: Option<TablesFn>,
+    pub(crate) figures: Option<FiguresFn>,
+}
+
+/// Every paper with experiments, in the order of the README's table.
+const PAPERS: &[Paper] = &[Paper {
+    name: "bez-core",
+    tables: None,
+    figures: Some(bez_core::figures),
+}];
+
+/// The papers selected by `--only` (all when `None`).
+pub(crate) fn selected(only: Option<&str>) -> Result<Vec<&'static Paper>, DynError> {
+    let all: Vec<&Paper> = PAPERS.iter().collect();
+    match only {
+        None => Ok(all),
+        Some(name) => {
+            let hit: Vec<_> = all.into_iter().filter(|p| p.name == name).collect();
+            if hit.is_empty() {
+                Err(format!("no experiments registered for `{name}`").into())
+            } else {
+                Ok(hit)
+            }
+        }
+    }
+}

@@ -15,6 +15,9 @@ const GL8: [(f64, f64); 4] = [
 ];
 
 const MAX_DEPTH: usize = 40;
+/// Upper bound on the number of interval halvings, so that a tolerance below what rounding
+/// allows cannot make the cost explode (2⁴⁰ intervals); the best estimate is returned then.
+const MAX_SPLITS: usize = 1 << 14;
 
 impl<const D: usize> BezierCurve<D> {
     /// Arc length ∫₀¹ |B'(t)| dt, to within `accuracy` (absolute).
@@ -31,7 +34,8 @@ impl<const D: usize> BezierCurve<D> {
         let hodo = self.derivative();
         let speed = |t: f64| hodo.eval_unchecked(t).norm();
         let whole = gauss(&speed, 0.0, 1.0);
-        Ok(adapt(&speed, 0.0, 1.0, whole, accuracy, 0))
+        let mut budget = MAX_SPLITS;
+        Ok(adapt(&speed, 0.0, 1.0, whole, accuracy, 0, &mut budget))
     }
 }
 
@@ -43,13 +47,25 @@ fn gauss(f: &impl Fn(f64) -> f64, a: f64, b: f64) -> f64 {
         * h
 }
 
-fn adapt(f: &impl Fn(f64) -> f64, a: f64, b: f64, whole: f64, acc: f64, depth: usize) -> f64 {
+fn adapt(
+    f: &impl Fn(f64) -> f64,
+    a: f64,
+    b: f64,
+    whole: f64,
+    acc: f64,
+    depth: usize,
+    budget: &mut usize,
+) -> f64 {
     let m = 0.5 * (a + b);
     let (l, r) = (gauss(f, a, m), gauss(f, m, b));
-    if depth >= MAX_DEPTH || (l + r - whole).abs() <= acc {
-        return l + r;
+    let sum = l + r;
+    // A non-finite sum (overflowing coordinates) cannot improve by halving.
+    if depth >= MAX_DEPTH || *budget == 0 || !sum.is_finite() || (sum - whole).abs() <= acc {
+        return sum;
     }
-    adapt(f, a, m, l, 0.5 * acc, depth + 1) + adapt(f, m, b, r, 0.5 * acc, depth + 1)
+    *budget -= 1;
+    adapt(f, a, m, l, 0.5 * acc, depth + 1, budget)
+        + adapt(f, m, b, r, 0.5 * acc, depth + 1, budget)
 }
 
 #[cfg(test)]

@@ -58,16 +58,23 @@ pub fn de_casteljau_in_place<T: ControlPoint>(work: &mut [T], t: f64) -> Option<
 
 /// Evaluates Σ Pᵢ B_{i,n}(t) by de Casteljau without allocating for n < 32; `None` if empty.
 #[must_use]
+#[inline]
 pub fn de_casteljau<T: ControlPoint>(points: &[T], t: f64) -> Option<T> {
-    if points.len() <= 32 {
-        let mut buf = [T::zero(); 32];
-        let work = &mut buf[..points.len()];
-        work.copy_from_slice(points);
-        de_casteljau_in_place(work, t)
-    } else {
-        let mut work = points.to_vec();
-        de_casteljau_in_place(&mut work, t)
+    match points.len() {
+        0..=4 => on_stack::<T, 4>(points, t),
+        5..=8 => on_stack::<T, 8>(points, t),
+        9..=32 => on_stack::<T, 32>(points, t),
+        _ => de_casteljau_in_place(&mut points.to_vec(), t),
     }
+}
+
+/// de Casteljau in a stack buffer of capacity `N` (the caller guarantees `points.len() <= N`).
+#[inline]
+fn on_stack<T: ControlPoint, const N: usize>(points: &[T], t: f64) -> Option<T> {
+    let mut buf = [T::zero(); N];
+    let work = buf.get_mut(..points.len())?;
+    work.copy_from_slice(points);
+    de_casteljau_in_place(work, t)
 }
 
 /// Splits a Bézier control polygon at `t` into the control polygons of B on [0, t] and [t, 1].

@@ -132,18 +132,36 @@ impl<const D: usize> BezierCurve<D> {
         self.points[self.points.len() - 1]
     }
 
-    /// B(t) by de Casteljau's algorithm (O(n²), the most stable evaluation).
+    /// B(t) by de Casteljau's algorithm (O(n²), the most stable evaluation; closed-form Bernstein
+    /// weights for degree ≤ 3).
     ///
     /// # Errors
     /// [`CoreError::ParameterOutOfRange`] when t ∉ [0, 1] or t is NaN.
+    #[inline]
     pub fn eval(&self, t: f64) -> Result<SVector<f64, D>, CoreError> {
         check_unit("t", t)?;
         Ok(self.eval_unchecked(t))
     }
 
     /// B(t) for a t already checked to be in [0, 1] (also valid, as a polynomial, outside).
+    ///
+    /// Degrees ≤ 3 use the Bernstein weights directly (non-negative, summing to 1, and exactly
+    /// (1, 0, …) at t = 0 and (…, 0, 1) at t = 1, so endpoints stay exact); higher degrees run
+    /// de Casteljau.
+    #[inline]
     pub(crate) fn eval_unchecked(&self, t: f64) -> SVector<f64, D> {
-        de_casteljau(&self.points, t).unwrap_or_else(SVector::zeros)
+        let p = &self.points;
+        let s = 1.0 - t;
+        match p.len() {
+            1 => p[0],
+            2 => p[0] * s + p[1] * t,
+            3 => p[0] * (s * s) + p[1] * (2.0 * s * t) + p[2] * (t * t),
+            4 => {
+                let (s2, t2) = (s * s, t * t);
+                p[0] * (s2 * s) + p[1] * (3.0 * s2 * t) + p[2] * (3.0 * s * t2) + p[3] * (t2 * t)
+            }
+            _ => de_casteljau(p, t).unwrap_or_else(SVector::zeros),
+        }
     }
 
     /// B(t) at many parameters in O(n) each (Horner in t/(1 − t), see [`HornerBernstein`]).

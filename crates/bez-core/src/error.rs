@@ -100,6 +100,7 @@ pub enum CoreError {
 }
 
 /// Checks that `value` lies in [0, 1] (and is finite).
+#[inline]
 pub(crate) fn check_unit(name: &'static str, value: f64) -> Result<(), CoreError> {
     if (0.0..=1.0).contains(&value) {
         Ok(())

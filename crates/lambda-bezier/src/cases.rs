@@ -1,0 +1,1 @@
+//! Experiment definitions shared by tests and xtask.

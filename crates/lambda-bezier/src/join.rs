@@ -96,6 +96,37 @@ pub fn join_c1<const D: usize>(
     LambdaBezierCurve::new(q, b.lambda())
 }
 
+/// The λ-curve with prescribed end points and end derivatives (a λ-Hermite segment):
+/// P₀ = `start`, P₁ = P₀ + `start_derivative`/(n + λ), `inner` points, Pₙ₋₁ = Pₙ − `end_derivative`/(n + λ),
+/// Pₙ = `end`, with n = `inner.len()` + 3. Consecutive segments built from shared points and
+/// derivatives join with C1 continuity whatever their λ, so λ can be tuned per segment.
+///
+/// # Errors
+/// [`LambdaError::DegenerateJoint`] if n + λ ≤ 0, λ out of range, non-finite points.
+pub fn hermite_segment<const D: usize>(
+    start: SVector<f64, D>,
+    start_derivative: SVector<f64, D>,
+    inner: &[SVector<f64, D>],
+    end: SVector<f64, D>,
+    end_derivative: SVector<f64, D>,
+    lambda: f64,
+) -> Result<LambdaBezierCurve<D>, LambdaError> {
+    let n = inner.len() + 3;
+    let range = crate::range::LambdaRange::new(n)?;
+    let lambda = range.check(lambda)?;
+    let k = n as f64 + lambda;
+    if k <= 0.0 {
+        return Err(LambdaError::DegenerateJoint { which: "outgoing" });
+    }
+    let mut p = Vec::with_capacity(n + 1);
+    p.push(start);
+    p.push(start + start_derivative / k);
+    p.extend_from_slice(inner);
+    p.push(end - end_derivative / k);
+    p.push(end);
+    LambdaBezierCurve::new(p, lambda)
+}
+
 fn unit_end_tangent<const D: usize>(
     a: &LambdaBezierCurve<D>,
 ) -> Result<SVector<f64, D>, LambdaError> {
@@ -156,6 +187,25 @@ mod tests {
         assert_eq!(continuity(&a(), &b1, 1e-12), Continuity::G1);
         let leg = |c: &LambdaBezierCurve<2>| (c.points()[1] - c.points()[0]).norm();
         assert!((leg(&b1) - leg(&b())).abs() < 1e-12);
+    }
+
+    #[test]
+    fn hermite_segments_join_c1_for_any_lambda() {
+        let (e0, d0) = (Vector2::new(0.0, 0.0), Vector2::new(1.0, 3.0));
+        let (e1, d1) = (Vector2::new(2.0, 1.0), Vector2::new(2.0, -1.0));
+        let (e2, d2) = (Vector2::new(4.0, 0.0), Vector2::new(0.5, -2.0));
+        for (la, lb) in [(-2.0, 1.0), (0.0, -2.5), (0.9, 0.3)] {
+            let a = hermite_segment(e0, d0, &[], e1, d1, la).unwrap();
+            let b = hermite_segment(e1, d1, &[Vector2::new(3.0, 2.0)], e2, d2, lb).unwrap();
+            assert_eq!(continuity(&a, &b, 1e-12), Continuity::C1);
+            assert!((a.derivative().start() - d0).norm() < 1e-12);
+            assert!((b.derivative().end() - d2).norm() < 1e-12);
+        }
+        assert!(matches!(
+            hermite_segment(e0, d0, &[], e1, d1, -3.0),
+            Err(LambdaError::DegenerateJoint { .. })
+        ));
+        assert!(hermite_segment(e0, d0, &[], e1, d1, -3.5).is_err());
     }
 
     #[test]

@@ -88,6 +88,24 @@ pub fn circle_error(lambda: f64) -> Result<f64, LambdaError> {
     Ok(max_radial_error(upper.to_bezier()).0)
 }
 
+/// The upper half circle as a quartic λ-curve on (−1, 0), (−1, h), (1, h), (1, 0); the paper's
+/// example is h = 1.2. Returns its max radial error.
+///
+/// # Errors
+/// λ outside [−3, 1], non-finite h.
+pub fn lambda_half_circle_error(h: f64, lambda: f64) -> Result<f64, LambdaError> {
+    let c = LambdaBezierCurve::new(
+        vec![
+            Vector2::new(-1.0, 0.0),
+            Vector2::new(-1.0, h),
+            Vector2::new(1.0, h),
+            Vector2::new(1.0, 0.0),
+        ],
+        lambda,
+    )?;
+    Ok(max_radial_error(c.to_bezier()).0)
+}
+
 /// The classical cubic Bézier half circle (−1, 0), (−1, h), (1, h), (1, 0); h = 4/3 puts the
 /// midpoint on the circle. (The circle example at λ = 0 is this curve with h = 1.2.)
 ///
@@ -227,6 +245,10 @@ mod tests {
         let (q, _) = max_radial_error(&cubic_quarter_circle(k).unwrap());
         assert!((q - 2.7253e-4).abs() < 1e-7, "{q}");
         assert!(circle_error(1.5).is_err());
+        assert_eq!(lambda_half_circle_error(1.2, CIRCLE_LAMBDA).unwrap(), e);
+        // λ = 0 is the cubic half circle of the same points.
+        let cubic = max_radial_error(&cubic_half_circle(1.2).unwrap()).0;
+        assert!((lambda_half_circle_error(1.2, 0.0).unwrap() - cubic).abs() < 1e-14);
     }
 
     #[test]
@@ -235,6 +257,12 @@ mod tests {
             for lambdas in [vec![0.0], vec![1.0, -1.0, 0.5, -2.0, 0.0, 1.0]] {
                 let v = vase_profile(n, &lambdas).unwrap();
                 assert_eq!(v.len(), 6);
+                // A vase profile: positive radius, height increasing.
+                for c in &v {
+                    let q = c.sample_uniform(50);
+                    assert!(q.iter().all(|p| p.x > 0.3));
+                    assert!(q.windows(2).all(|w| w[1].y > w[0].y));
+                }
                 for w in v.windows(2) {
                     assert_eq!(continuity(&w[0], &w[1], 1e-12), Continuity::C1);
                 }

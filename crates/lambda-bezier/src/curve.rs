@@ -37,11 +37,42 @@ use crate::range::LambdaRange;
 /// # Ok::<(), lambda_bezier::LambdaError>(())
 /// ```
 #[derive(Debug, Clone, PartialEq)]
+#[cfg_attr(
+    feature = "serde",
+    derive(serde::Serialize, serde::Deserialize),
+    serde(try_from = "CurveRepr<D>", into = "CurveRepr<D>")
+)]
 pub struct LambdaBezierCurve<const D: usize> {
     points: Vec<SVector<f64, D>>,
     lambda: f64,
     range: LambdaRange,
     bezier: BezierCurve<D>,
+}
+
+/// Serialized form: the control points and λ (validated again on deserialization).
+#[cfg(feature = "serde")]
+#[derive(serde::Serialize, serde::Deserialize)]
+struct CurveRepr<const D: usize> {
+    points: Vec<SVector<f64, D>>,
+    lambda: f64,
+}
+
+#[cfg(feature = "serde")]
+impl<const D: usize> TryFrom<CurveRepr<D>> for LambdaBezierCurve<D> {
+    type Error = LambdaError;
+    fn try_from(r: CurveRepr<D>) -> Result<Self, LambdaError> {
+        Self::new(r.points, r.lambda)
+    }
+}
+
+#[cfg(feature = "serde")]
+impl<const D: usize> From<LambdaBezierCurve<D>> for CurveRepr<D> {
+    fn from(c: LambdaBezierCurve<D>) -> Self {
+        Self {
+            points: c.points,
+            lambda: c.lambda,
+        }
+    }
 }
 
 /// The Bézier control points Q₀..Q_{n+1} of the λ-Bézier curve on `points` (no validation).

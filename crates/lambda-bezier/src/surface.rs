@@ -14,11 +14,44 @@ use crate::range::LambdaRange;
 /// first, as in [`BezierSurface`]). The surface keeps its exact Bézier form of bidegree
 /// (n + 1, m + 1): the corner cutting of the curve case applied to the rows, then to the columns.
 #[derive(Debug, Clone, PartialEq)]
+#[cfg_attr(
+    feature = "serde",
+    derive(serde::Serialize, serde::Deserialize),
+    serde(try_from = "SurfaceRepr<D>", into = "SurfaceRepr<D>")
+)]
 pub struct LambdaBezierSurface<const D: usize> {
     rows: Vec<Vec<SVector<f64, D>>>,
     lambda_u: f64,
     lambda_v: f64,
     bezier: BezierSurface<D>,
+}
+
+/// Serialized form: the grid and both λ (validated again on deserialization).
+#[cfg(feature = "serde")]
+#[derive(serde::Serialize, serde::Deserialize)]
+struct SurfaceRepr<const D: usize> {
+    rows: Vec<Vec<SVector<f64, D>>>,
+    lambda_u: f64,
+    lambda_v: f64,
+}
+
+#[cfg(feature = "serde")]
+impl<const D: usize> TryFrom<SurfaceRepr<D>> for LambdaBezierSurface<D> {
+    type Error = LambdaError;
+    fn try_from(r: SurfaceRepr<D>) -> Result<Self, LambdaError> {
+        Self::new(r.rows, r.lambda_u, r.lambda_v)
+    }
+}
+
+#[cfg(feature = "serde")]
+impl<const D: usize> From<LambdaBezierSurface<D>> for SurfaceRepr<D> {
+    fn from(s: LambdaBezierSurface<D>) -> Self {
+        Self {
+            rows: s.rows,
+            lambda_u: s.lambda_u,
+            lambda_v: s.lambda_v,
+        }
+    }
 }
 
 impl<const D: usize> LambdaBezierSurface<D> {

@@ -11,16 +11,26 @@ use crate::range::LambdaRange;
 /// n + 1 control points P₀..Pₙ (n ≥ 2) and a shape parameter λ in the exact valid interval of
 /// [`LambdaRange`]. The curve is a polynomial of degree n + 1; it keeps its exact Bézier form
 /// Qⱼ = (1 − αⱼ) Pⱼ₋₁ + αⱼ Pⱼ, j = 0..=n+1 ([`corner_cut_ratio`]), and every evaluation goes
-/// through that form (de Casteljau / Horner of bez-core), so it costs exactly what an ordinary
-/// Bézier curve of degree n + 1 costs.
+/// through that form (de Casteljau / Horner of bez-core, O(n) per point with `eval_many`), so it
+/// costs exactly what an ordinary Bézier curve of degree n + 1 costs. λ = 0 gives the degree-n
+/// Bézier curve of the same points; λ > 0 pulls the curve towards the control polygon.
 ///
-/// Properties (section 3 of the paper): B(0) = P₀, B(1) = Pₙ,
-/// B'(0) = (n + λ)(P₁ − P₀), B'(1) = (n + λ)(Pₙ − Pₙ₋₁) (Property 1);
-/// convex hull (2); reversal symmetry (3); affine invariance (4); variation diminishing (5):
-/// Qⱼ lies on the edge Pⱼ₋₁Pⱼ, so the Bézier polygon is a corner cutting of the control polygon
-/// (the paper's proof of (5) is not valid, this argument is); λ = 0 gives the degree-n Bézier
-/// curve of the same points.
+/// ### Interpolation
+/// B(0) = P₀ and B(1) = Pₙ exactly (curve Property 1).
 ///
+/// ### Tangency
+/// B'(0) = (n + λ)(P₁ − P₀), B'(1) = (n + λ)(Pₙ − Pₙ₋₁) (curve Property 1); both vanish at
+/// λ = −n, which lies in the valid interval for n = 2..5.
+///
+/// ### Shape
+/// Convex hull (Property 2), reversal symmetry (3), affine invariance (4), variation diminishing
+/// (5): on the valid interval Qⱼ lies on the edge Pⱼ₋₁Pⱼ, so the Bézier polygon is a corner
+/// cutting of the control polygon (the paper's proof of (5) is not valid, this argument is).
+///
+/// ### Continuity
+/// See [`crate::join_g1`], [`crate::join_c1`] and [`crate::hermite_segment`].
+///
+/// ### Usage
 /// ```
 /// use bez_core::Vector2;
 /// use lambda_bezier::LambdaBezierCurve;

@@ -19,6 +19,9 @@
 
 use crate::error::LambdaError;
 
+/// Largest supported n: n(n − 1) and M(n) stay exact in u64 and in f64's 53-bit mantissa.
+const MAX_N: usize = 1 << 26;
+
 /// The exact valid interval [min, 1] of λ for the λ-B basis of degree n + 1.
 ///
 /// `min = −numerator / denominator` with `numerator = n(n−1)` and
@@ -36,7 +39,8 @@ impl LambdaRange {
     /// The exact interval for n ≥ 2 (degree n + 1 ≥ 3).
     ///
     /// # Errors
-    /// [`LambdaError::DegreeTooLow`] for n < 2.
+    /// [`LambdaError::DegreeTooLow`] for n < 2; `CoreError::TooLarge` for n > 2²⁶ (the exact
+    /// fraction would no longer be exact in f64).
     ///
     /// ```
     /// use lambda_bezier::LambdaRange;
@@ -47,6 +51,9 @@ impl LambdaRange {
     pub fn new(n: usize) -> Result<Self, LambdaError> {
         if n < 2 {
             return Err(LambdaError::DegreeTooLow { n });
+        }
+        if n > MAX_N {
+            return Err(bez_core::CoreError::TooLarge { requested: n }.into());
         }
         // j(n+1−2j) is a concave parabola in j with its peak at (n+1)/4: the integer maximum is at
         // floor or ceil of it (both ≥ 1 and ≤ n for n ≥ 2).
@@ -156,6 +163,8 @@ mod tests {
     #[test]
     fn rejects_low_degree_and_bad_lambda() {
         assert_eq!(LambdaRange::new(1), Err(LambdaError::DegreeTooLow { n: 1 }));
+        assert!(LambdaRange::new(usize::MAX).is_err());
+        assert!(LambdaRange::new(1 << 26).is_ok());
         let r = LambdaRange::new(3).unwrap();
         assert!(matches!(
             r.check(f64::NAN),

@@ -182,13 +182,15 @@ pub(crate) fn figures(dir: &Path) -> Result<Vec<PathBuf>, DynError> {
         )
         .equal();
         for lambdas in [vec![0.0], vec![1.0, -2.0, 1.0, -2.0, 1.0, -2.0]] {
-            let right = vase_profile(n, &lambdas)?;
-            let pts = polyline(&right, 80);
-            let left: Xy = pts.iter().map(|&(x, y)| (-x, y)).collect();
-            let label = format!("λ = {lambdas:?}");
-            p = p
-                .with(Series::new(label, pts, Style::Line))
-                .with(Series::new("", left, Style::Line));
+            let right = polyline(&vase_profile(n, &lambdas)?, 80);
+            // One outline: left side top to bottom, the base, right side bottom to top.
+            let mut outline: Xy = right.iter().rev().map(|&(x, y)| (-x, y)).collect();
+            outline.extend_from_slice(&right);
+            p = p.with(Series::new(
+                format!("λ = {lambdas:?}"),
+                outline,
+                Style::Line,
+            ));
         }
         out.push(p.write_svg(&dir.join(format!("fig8{sub}-vase-degree{}.svg", n + 1)))?);
     }

@@ -236,6 +236,16 @@ mod tests {
     }
 
     #[test]
+    fn lambda_zero_is_the_bezier_surface_of_the_grid() {
+        let g = grid(3, 2);
+        let s = LambdaBezierSurface::new(g.clone(), 0.0, 0.0).unwrap();
+        let b = BezierSurface::new(g).unwrap();
+        for &(u, v) in &[(0.0, 0.5), (0.25, 0.75), (0.6, 0.1), (1.0, 1.0)] {
+            assert!((s.eval(u, v).unwrap() - b.eval(u, v).unwrap()).norm() < 1e-13);
+        }
+    }
+
+    #[test]
     fn boundary_curves_are_lambda_curves() {
         let g = grid(4, 2);
         let s = LambdaBezierSurface::new(g.clone(), -3.0, 0.5).unwrap();

@@ -1,0 +1,6 @@
+//! Integration tests of lambda-bezier: exact-arithmetic oracles, property tests of the basis and
+//! the curves, and serialization.
+
+mod exact;
+mod properties;
+mod serialization;

@@ -5,7 +5,10 @@
 )]
 
 use bez_core::{SVector, Vector2, Vector3, roots_in_unit_interval};
-use lambda_bezier::{LambdaBasis, LambdaBezierCurve, LambdaRange, corner_cut_ratio};
+use lambda_bezier::{
+    Continuity, LambdaBasis, LambdaBezierCurve, LambdaRange, continuity, corner_cut_ratio, join_c1,
+    join_g1,
+};
 use proptest::prelude::*;
 
 /// (n, λ) with λ anywhere in the exact valid interval of n.
@@ -206,5 +209,19 @@ proptest! {
         let f = |p: &Vector2<f64>| Vector2::new(s * p.x + a * p.y + 1.5, -a * p.x + p.y - 0.5);
         let mapped = c.map_points(f).unwrap();
         prop_assert!((mapped.eval(t).unwrap() - f(&c.eval(t).unwrap())).norm() < 1e-11);
+    }
+
+    /// join_g1 and join_c1 give the continuity they promise, for any degrees and λ.
+    #[test]
+    fn joins_are_g1_and_c1(a in curve::<2>(), b in curve::<2>()) {
+        prop_assume!(a.end_tangent().norm() > 1e-6);
+        prop_assume!((b.points()[1] - b.points()[0]).norm() > 1e-6);
+        prop_assume!(b.n() as f64 + b.lambda() > 1e-6);
+        let g = join_g1(&a, &b).unwrap();
+        prop_assert!(continuity(&a, &g, 1e-9) >= Continuity::G1);
+        let c = join_c1(&a, &b).unwrap();
+        prop_assert_eq!(continuity(&a, &c, 1e-9), Continuity::C1);
+        let (da, dc) = (a.derivative().end(), c.derivative().start());
+        prop_assert!((da - dc).norm() <= 1e-9 * (1.0 + da.norm()));
     }
 }

@@ -106,13 +106,19 @@ proptest! {
         }
     }
 
-    /// Eq. (5) (values unimodal in the index at fixed t) holds for λ ∈ [0, 1] (observed, not
-    /// proved); it fails for negative λ (see tests/exact.rs).
+    /// Eq. (5) holds for λ ∈ [−2/3, 1] and every n: the values are log-concave in the index
+    /// (b_k² ≥ b_{k−1} b_{k+1}), hence unimodal. Proof in the paper page; it fails below −2/3 for
+    /// n = 2 (tests/paper/exact.rs).
     #[test]
-    fn unimodal_in_index_for_nonnegative_lambda(n in 2usize..=15, l in 0.0..=1.0f64, t in 0.0..=1.0f64) {
+    fn log_concave_in_index_from_minus_two_thirds(n in 2usize..=15, s in 0.0..=1.0f64, t in 0.0..=1.0f64) {
+        let l = -2.0 / 3.0 + s * (1.0 + 2.0 / 3.0);
         let b = LambdaBasis::new(n, l).unwrap();
         let mut row = vec![0.0; n + 1];
         b.row(t, &mut row).unwrap();
+        for k in 1..n {
+            let (lhs, rhs) = (row[k] * row[k], row[k - 1] * row[k + 1]);
+            prop_assert!(lhs >= rhs - 1e-13 * (lhs + rhs), "k = {k}: {row:?}");
+        }
         let mut falling = false;
         for w in row.windows(2) {
             if w[1] < w[0] - 1e-15 { falling = true; }

@@ -4,7 +4,7 @@
 //! Polynomials in t have coefficients linear in λ: `Lin { a, b }` stands for a + bλ.
 #![allow(
     clippy::unwrap_used,
-    reason = "test helpers outside #[test] fns unwrap known-good values"
+    reason = "test support functions outside #[test] fns unwrap known-good values"
 )]
 
 use lambda_bezier::{LambdaBasis, LambdaRange};

@@ -1,7 +1,7 @@
 //! Properties 1–6 of the λ-B basis and the curve properties of section 3, over degrees 2..15.
 #![allow(
     clippy::unwrap_used,
-    reason = "test helpers outside #[test] fns unwrap known-good values"
+    reason = "test support functions outside #[test] fns unwrap known-good values"
 )]
 
 use bez_core::{SVector, Vector2, Vector3, roots_in_unit_interval};

@@ -39,6 +39,9 @@ pub fn corner_cut_ratio(n: usize, j: usize, lambda: f64) -> f64 {
 /// b_{−1,n} = b_{n,n} = 0. Evaluation uses the closed Bernstein form ([`corner_cut_ratio`]);
 /// [`LambdaBasis::eval_by_recurrence`] runs the paper's recurrence as an independent check.
 ///
+/// Errata: eq. (5) (values unimodal in k at fixed t) holds for λ ∈ [−2/3, 1] but not on the whole
+/// valid interval; the functions are linearly dependent at the lower end of [`LambdaRange`].
+///
 /// ```
 /// use lambda_bezier::LambdaBasis;
 /// let b = LambdaBasis::new(3, -1.0)?;

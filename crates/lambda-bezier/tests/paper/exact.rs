@@ -4,7 +4,7 @@
 //! Polynomials in t have coefficients linear in λ: `Lin { a, b }` stands for a + bλ.
 #![allow(
     clippy::unwrap_used,
-    reason = "test helpers outside #[test] fns unwrap known-good values"
+    reason = "test support functions outside #[test] fns unwrap known-good values"
 )]
 
 use lambda_bezier::{LambdaBasis, LambdaRange};
@@ -349,6 +349,12 @@ fn unimodality_in_the_index_fails_for_negative_lambda() {
     let v: Vec<Q> = b.iter().map(|p| eval_poly(p, &l, &t)).collect();
     assert!(v[0] > v[1] && v[1] < v[2], "{v:?}");
     assert!(!is_unimodal(&v));
+    // The threshold −2/3 is sharp for n = 2: at t = 1/2, b₁ < b₀ = b₂ exactly when λ < −2/3.
+    let b = recurrence(2);
+    let half = q(1, 2);
+    let at = |l: Q| -> Vec<Q> { b.iter().map(|p| eval_poly(p, &l, &half)).collect() };
+    assert!(!is_unimodal(&at(q(-2, 3) - q(1, 1000))));
+    assert!(is_unimodal(&at(q(-2, 3))));
     // n = 3, λ = −3, t = 2/5.
     let b = recurrence(3);
     let (l, t) = (q(-3, 1), q(2, 5));

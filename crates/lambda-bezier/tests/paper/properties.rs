@@ -1,11 +1,14 @@
 //! Properties 1–6 of the λ-B basis and the curve properties of section 3, over degrees 2..15.
 #![allow(
     clippy::unwrap_used,
-    reason = "test helpers outside #[test] fns unwrap known-good values"
+    reason = "test support functions outside #[test] fns unwrap known-good values"
 )]
 
 use bez_core::{SVector, Vector2, Vector3, roots_in_unit_interval};
-use lambda_bezier::{LambdaBasis, LambdaBezierCurve, LambdaRange, corner_cut_ratio};
+use lambda_bezier::{
+    Continuity, LambdaBasis, LambdaBezierCurve, LambdaRange, continuity, corner_cut_ratio, join_c1,
+    join_g1,
+};
 use proptest::prelude::*;
 
 /// (n, λ) with λ anywhere in the exact valid interval of n.
@@ -103,13 +106,19 @@ proptest! {
         }
     }
 
-    /// Eq. (5) (values unimodal in the index at fixed t) holds for λ ∈ [0, 1] (observed, not
-    /// proved); it fails for negative λ (see tests/exact.rs).
+    /// Eq. (5) holds for λ ∈ [−2/3, 1] and every n: the values are log-concave in the index
+    /// (b_k² ≥ b_{k−1} b_{k+1}), hence unimodal. Proof in the paper page; it fails below −2/3 for
+    /// n = 2 (tests/paper/exact.rs).
     #[test]
-    fn unimodal_in_index_for_nonnegative_lambda(n in 2usize..=15, l in 0.0..=1.0f64, t in 0.0..=1.0f64) {
+    fn log_concave_in_index_from_minus_two_thirds(n in 2usize..=15, s in 0.0..=1.0f64, t in 0.0..=1.0f64) {
+        let l = -2.0 / 3.0 + s * (1.0 + 2.0 / 3.0);
         let b = LambdaBasis::new(n, l).unwrap();
         let mut row = vec![0.0; n + 1];
         b.row(t, &mut row).unwrap();
+        for k in 1..n {
+            let (lhs, rhs) = (row[k] * row[k], row[k - 1] * row[k + 1]);
+            prop_assert!(lhs >= rhs - 1e-13 * (lhs + rhs), "k = {k}: {row:?}");
+        }
         let mut falling = false;
         for w in row.windows(2) {
             if w[1] < w[0] - 1e-15 { falling = true; }
@@ -206,5 +215,19 @@ proptest! {
         let f = |p: &Vector2<f64>| Vector2::new(s * p.x + a * p.y + 1.5, -a * p.x + p.y - 0.5);
         let mapped = c.map_points(f).unwrap();
         prop_assert!((mapped.eval(t).unwrap() - f(&c.eval(t).unwrap())).norm() < 1e-11);
+    }
+
+    /// join_g1 and join_c1 give the continuity they promise, for any degrees and λ.
+    #[test]
+    fn joins_are_g1_and_c1(a in curve::<2>(), b in curve::<2>()) {
+        prop_assume!(a.end_tangent().norm() > 1e-6);
+        prop_assume!((b.points()[1] - b.points()[0]).norm() > 1e-6);
+        prop_assume!(b.n() as f64 + b.lambda() > 1e-6);
+        let g = join_g1(&a, &b).unwrap();
+        prop_assert!(continuity(&a, &g, 1e-9) >= Continuity::G1);
+        let c = join_c1(&a, &b).unwrap();
+        prop_assert_eq!(continuity(&a, &c, 1e-9), Continuity::C1);
+        let (da, dc) = (a.derivative().end(), c.derivative().start());
+        prop_assert!((da - dc).norm() <= 1e-9 * (1.0 + da.norm()));
     }
 }

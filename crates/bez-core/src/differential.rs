@@ -101,6 +101,34 @@ mod tests {
     }
 
     #[test]
+    fn circle_cubic_curvature_matches_endpoint_formula() {
+        // Quarter-circle cubic P0 = (1,0), P1 = (1,k), P2 = (k,1), P3 = (0,1). At the ends
+        // κ = (n−1)/n · |Δ₀ × Δ₁| / |Δ₀|³; with k = 4(√2−1)/3 this is ≈ 1 (the unit circle),
+        // and the midpoint lies on the circle exactly.
+        let k = 4.0 * (2f64.sqrt() - 1.0) / 3.0;
+        let c = BezierCurve::new(vec![
+            Vector2::new(1.0, 0.0),
+            Vector2::new(1.0, k),
+            Vector2::new(k, 1.0),
+            Vector2::new(0.0, 1.0),
+        ])
+        .unwrap();
+        let (d0, d1) = (Vector2::new(0.0, k), Vector2::new(k - 1.0, 1.0 - k));
+        let end = 2.0 / 3.0 * (d0.x * d1.y - d0.y * d1.x).abs() / d0.norm().powi(3);
+        assert!((c.signed_curvature(0.0).unwrap() - end).abs() < 1e-14);
+        assert!((c.signed_curvature(1.0).unwrap() - end).abs() < 1e-14);
+        assert!((end - 1.0).abs() < 0.1);
+        assert!((c.eval(0.5).unwrap().norm() - 1.0).abs() < 1e-15);
+        // Curvature is symmetric about t = ½ and positive (turning left).
+        for k in 0..=10 {
+            let t = f64::from(k) / 10.0;
+            let a = c.signed_curvature(t).unwrap();
+            assert!(a > 0.0);
+            assert!((a - c.signed_curvature(1.0 - t).unwrap()).abs() < 1e-12);
+        }
+    }
+
+    #[test]
     fn twisted_cubic_torsion_matches_analytic() {
         // (t, t², t³): power basis → Bernstein: P0 = 0, P1 = (1/3,0,0), P2 = (2/3,1/3,0), P3 = (1,1,1).
         let c = BezierCurve::new(vec![

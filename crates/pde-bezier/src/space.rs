@@ -28,7 +28,8 @@ pub(crate) struct Space {
     pub(crate) degree: usize,
     pub(crate) pieces: Vec<Piece>,
     pub(crate) n_coef: usize,
-    /// One collocation abscissa per coefficient (Greville abscissae).
+    /// One collocation abscissa per coefficient (Greville abscissae; those of the periodic
+    /// knot sequence when periodic).
     pub(crate) greville: Vec<f64>,
 }
 
@@ -190,7 +191,16 @@ impl Space {
                 local_piece(&(&piece.ext * sub))
             })
             .collect();
-        let greville = self.greville[r1..].to_vec();
+        // Clamped Greville abscissae cluster at the seam: use those of the periodic knot
+        // sequence t_k = ⌊k/μ⌋ h (every knot of multiplicity μ = n − r), modulo 1.
+        let mu = self.degree - smoothness;
+        let h = self.width();
+        let greville = (0..nw)
+            .map(|i| {
+                let sum: usize = (i + 1..=i + self.degree).map(|k| k / mu).sum();
+                (sum as f64 * h / self.degree as f64).rem_euclid(1.0)
+            })
+            .collect();
         Ok(Self {
             degree: self.degree,
             pieces,

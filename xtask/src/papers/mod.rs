@@ -35,7 +35,7 @@ const PAPERS: &[Paper] = &[
     Paper {
         name: "pde-bezier",
         tables: Some(pde_bezier::tables),
-        figures: None,
+        figures: Some(pde_bezier::figures),
     },
 ];
 

@@ -2,9 +2,13 @@
 //! on one trial space) and convergence tables.
 
 use std::fmt::Write as _;
+use std::path::{Path, PathBuf};
+
+use bez_core::Vector3;
+use plotters::prelude::*;
 
 use pde_bezier::cases::{self, Case};
-use pde_bezier::{Assembly, Discretization, ErrorNorms, Method, solve};
+use pde_bezier::{Assembly, Discretization, ErrorNorms, Method, PatchGrid, solve};
 use serde_json::{Value, json};
 
 use crate::DynError;
@@ -230,10 +234,159 @@ pub(crate) fn tables() -> Result<Vec<Table>, DynError> {
         .into_iter()
         .map(run_case)
         .collect::<Result<Vec<_>, _>>()?;
-    let _ = solve;
     Ok(vec![
         error_table(&rows, true),
         error_table(&rows, false),
         convergence_table()?,
     ])
+}
+
+/// Wireframes (exact and approximation, axonometric projection) and error heat maps of the
+/// paper's method for every example.
+pub(crate) fn figures(dir: &Path) -> Result<Vec<PathBuf>, DynError> {
+    let mut out = Vec::new();
+    for (k, case) in cases::paper_cases()?.into_iter().enumerate() {
+        let sol = solve(&case.problem, &case.disc, Method::BernsteinLeastSquares)?;
+        let stem = format!("fig{}-{}", case.figure, k);
+        out.push(wireframe(dir, &stem, &case, &sol.surface)?);
+        out.push(heat_map(dir, &stem, &case, &sol.surface)?);
+    }
+    Ok(out)
+}
+
+/// Isometric-style projection of a point.
+fn project(p: Vector3<f64>) -> (f64, f64) {
+    let (c, s) = (0.866_025_403_784_438_6, 0.5);
+    ((p.x - p.y) * c, p.z + (p.x + p.y) * s * 0.5)
+}
+
+fn iso_lines(
+    f: &dyn Fn(f64, f64) -> Vector3<f64>,
+    lines: usize,
+    steps: usize,
+) -> Vec<Vec<(f64, f64)>> {
+    let mut out = Vec::new();
+    for a in 0..=lines {
+        let s = a as f64 / lines as f64;
+        out.push(
+            (0..=steps)
+                .map(|b| project(f(s, b as f64 / steps as f64)))
+                .collect(),
+        );
+        out.push(
+            (0..=steps)
+                .map(|b| project(f(b as f64 / steps as f64, s)))
+                .collect(),
+        );
+    }
+    out
+}
+
+fn wireframe(
+    dir: &Path,
+    stem: &str,
+    case: &Case,
+    surface: &PatchGrid,
+) -> Result<PathBuf, DynError> {
+    let path = dir.join(format!("{stem}-wireframe.svg"));
+    let exact = iso_lines(&|u, v| case.exact.eval(u, v), 16, 80);
+    let approx = iso_lines(
+        &|u, v| surface.eval(u, v).unwrap_or_else(|_| Vector3::zeros()),
+        16,
+        80,
+    );
+    let all = exact.iter().chain(&approx).flatten();
+    let (mut x0, mut x1, mut y0, mut y1) = (f64::MAX, f64::MIN, f64::MAX, f64::MIN);
+    for &(x, y) in all {
+        x0 = x0.min(x);
+        x1 = x1.max(x);
+        y0 = y0.min(y);
+        y1 = y1.max(y);
+    }
+    let pad = 0.05 * (x1 - x0).max(y1 - y0);
+    let root = SVGBackend::new(&path, (720, 640)).into_drawing_area();
+    root.fill(&WHITE)?;
+    let mut chart = ChartBuilder::on(&root)
+        .caption(
+            format!("{}: exact (grey) and approximation (blue)", case.label),
+            ("sans-serif", 18),
+        )
+        .margin(12)
+        .build_cartesian_2d(x0 - pad..x1 + pad, y0 - pad..y1 + pad)?;
+    for line in exact {
+        chart.draw_series(LineSeries::new(
+            line,
+            RGBColor(170, 170, 170).stroke_width(3),
+        ))?;
+    }
+    for line in approx {
+        chart.draw_series(LineSeries::new(
+            line,
+            RGBColor(31, 119, 180).stroke_width(1),
+        ))?;
+    }
+    root.present()?;
+    drop(chart);
+    drop(root);
+    Ok(path)
+}
+
+fn heat_map(dir: &Path, stem: &str, case: &Case, surface: &PatchGrid) -> Result<PathBuf, DynError> {
+    let path = dir.join(format!("{stem}-error.svg"));
+    let cells = 40;
+    let mut errs = vec![0.0; cells * cells];
+    for i in 0..cells {
+        for j in 0..cells {
+            let (u, v) = (
+                (i as f64 + 0.5) / cells as f64,
+                (j as f64 + 0.5) / cells as f64,
+            );
+            errs[i * cells + j] = (case.exact.eval(u, v) - surface.eval(u, v)?).norm();
+        }
+    }
+    let lo = errs
+        .iter()
+        .copied()
+        .fold(f64::MAX, f64::min)
+        .max(1e-16)
+        .log10();
+    let hi = errs.iter().copied().fold(0.0, f64::max).max(1e-16).log10();
+    let root = SVGBackend::new(&path, (640, 600)).into_drawing_area();
+    root.fill(&WHITE)?;
+    let mut chart = ChartBuilder::on(&root)
+        .caption(
+            format!(
+                "{}: |X − X̃|, log10 from {lo:.1} (dark) to {hi:.1} (light)",
+                case.label
+            ),
+            ("sans-serif", 16),
+        )
+        .margin(12)
+        .x_label_area_size(36)
+        .y_label_area_size(44)
+        .build_cartesian_2d(0.0..1.0, 0.0..1.0)?;
+    chart
+        .configure_mesh()
+        .x_desc("u")
+        .y_desc("v")
+        .max_light_lines(0)
+        .draw()?;
+    let span = (hi - lo).max(1e-12);
+    chart.draw_series((0..cells * cells).map(|k| {
+        let (i, j) = (k / cells, k % cells);
+        let t = ((errs[k].max(1e-16).log10() - lo) / span).clamp(0.0, 1.0);
+        let color = HSLColor(0.7 - 0.55 * t, 0.8, 0.15 + 0.7 * t);
+        let h = 1.0 / cells as f64;
+        Rectangle::new(
+            [
+                (i as f64 * h, j as f64 * h),
+                ((i + 1) as f64 * h, (j + 1) as f64 * h),
+            ],
+            color.filled(),
+        )
+    }))?;
+    root.present()?;
+    drop(chart);
+    drop(root);
+    Ok(path)
 }

@@ -86,13 +86,13 @@ fn error_table(rows: &[Row], rms: bool) -> Table {
     );
     let _ = write!(
         md,
-        "| example | trial space | unknowns | collocation | Galerkin | ours: Σb² (4) | ∫∫R² |"
+        "| example | trial space | unknowns | BW collocation | BW Galerkin | Xu–Wang Σb² (4) | ∫∫R² |"
     );
     if !rms {
         let _ = write!(md, " Σb², max on 401² |");
     }
-    let _ = writeln!(md, " paper: Bloor–Wilson | paper: ours | Σb² beats both? |");
-    let cols = if rms { 9 } else { 10 };
+    let _ = writeln!(md, " paper: Bloor–Wilson | paper: Xu–Wang | Σb² beats both BW? |");
+    let cols = if rms { 10 } else { 11 };
     let _ = writeln!(md, "|{}", "---|".repeat(cols));
     let mut checked = Vec::new();
     for row in rows {

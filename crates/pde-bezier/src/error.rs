@@ -136,6 +136,12 @@ pub enum Error {
         /// Smallest over largest pivot.
         pivot_ratio: f64,
     },
+    /// A STEP file could not be read.
+    #[error("step file: {what}")]
+    Step {
+        /// What went wrong.
+        what: String,
+    },
     /// An evaluation parameter is outside [0, 1].
     #[error("grid parameter {value} is outside [0, 1]")]
     ParameterOutOfRange {

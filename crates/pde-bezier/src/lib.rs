@@ -49,9 +49,13 @@ mod manufactured;
 mod problem;
 mod solve;
 mod space;
+mod spline_surface;
+mod step;
 
 pub use error::Error;
 pub use grid::{ErrorNorms, PatchGrid};
 pub use manufactured::{apply_operator, side_of};
 pub use problem::{Discretization, Operator, Problem, Side, SideCurve, Term};
 pub use solve::{Assembly, Method, Solution, solve};
+pub use spline_surface::BSplineSurface;
+pub use step::{read_step, write_step};

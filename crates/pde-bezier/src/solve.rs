@@ -6,6 +6,7 @@ use crate::error::Error;
 use crate::grid::PatchGrid;
 use crate::problem::{Discretization, Problem, Side};
 use crate::space::Space;
+use crate::spline_surface::BSplineSurface;
 use bez_core::{BezierSurface, Vector3};
 use nalgebra::{DMatrix, Dyn, OMatrix, U3};
 
@@ -64,6 +65,8 @@ pub struct Solution {
     pub boundary_fit_error: f64,
     /// Number of free control points (unknowns per coordinate).
     pub unknowns: usize,
+    /// The same surface as one clamped B-spline surface (C^r joins as knot multiplicities).
+    pub spline: BSplineSurface,
 }
 
 /// A problem assembled on a trial space: the residual map of every patch, the fixed control
@@ -425,12 +428,45 @@ impl Assembly {
             surfaces.push(BezierSurface::from_flat(n, m, points)?);
         }
         Ok(Solution {
+            spline: self.spline(coefs),
             surface: PatchGrid::new(self.su.pieces.len(), self.sv.pieces.len(), surfaces),
             objective,
             residual_bound: bound,
             boundary_fit_error: self.fit_error,
             unknowns,
         })
+    }
+}
+
+impl Assembly {
+    /// The clamped B-spline form: c_clamped = Z_u c Z_vᵀ (Z the periodic closure, or I).
+    fn spline(&self, coefs: &[Vector3<f64>]) -> BSplineSurface {
+        let (nu, nv) = (self.su.n_coef, self.sv.n_coef);
+        let expand = |space: &Space| -> DMatrix<f64> {
+            space
+                .to_clamped
+                .clone()
+                .unwrap_or_else(|| DMatrix::identity(space.n_coef, space.n_coef))
+        };
+        let (zu, zv) = (expand(&self.su), expand(&self.sv));
+        let (cu, cv) = (zu.nrows(), zv.nrows());
+        let mut points = vec![Vector3::zeros(); cu * cv];
+        for d in 0..3 {
+            let c = DMatrix::from_fn(nu, nv, |i, j| coefs[i * nv + j][d]);
+            let full = &zu * c * zv.transpose();
+            for i in 0..cu {
+                for j in 0..cv {
+                    points[i * cv + j][d] = full[(i, j)];
+                }
+            }
+        }
+        BSplineSurface {
+            degree_u: self.su.degree,
+            degree_v: self.sv.degree,
+            knots_u: self.su.knots.clone(),
+            knots_v: self.sv.knots.clone(),
+            points,
+        }
     }
 }
 

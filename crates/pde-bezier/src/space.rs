@@ -28,6 +28,11 @@ pub(crate) struct Space {
     pub(crate) degree: usize,
     pub(crate) pieces: Vec<Piece>,
     pub(crate) n_coef: usize,
+    /// The clamped knot vector (interior multiplicity n − r).
+    pub(crate) knots: Vec<f64>,
+    /// Clamped B-spline coefficients as a map of the unknowns (None: the identity; periodic
+    /// spaces express their first r + 1 coefficients through the last r + 1).
+    pub(crate) to_clamped: Option<DMatrix<f64>>,
     /// One collocation abscissa per coefficient (Greville abscissae; those of the periodic
     /// knot sequence when periodic).
     pub(crate) greville: Vec<f64>,
@@ -71,6 +76,7 @@ impl Space {
         let greville: Vec<f64> = (0..n_coef)
             .map(|i| knots[i + 1..=i + n].iter().sum::<f64>() / n as f64)
             .collect();
+        let clamped_knots = knots.clone();
         // Boehm insertion of every interior knot up to multiplicity n, on the identity.
         let mut coefs = DMatrix::<f64>::identity(n_coef, n_coef);
         for p in 1..pieces {
@@ -85,6 +91,8 @@ impl Space {
             out.push(local_piece(&rows));
         }
         let mut space = Self {
+            knots: clamped_knots,
+            to_clamped: None,
             degree: n,
             pieces: out,
             n_coef,
@@ -202,6 +210,8 @@ impl Space {
             })
             .collect();
         Ok(Self {
+            knots: self.knots,
+            to_clamped: Some(z),
             degree: self.degree,
             pieces,
             n_coef: nw,

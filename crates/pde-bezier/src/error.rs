@@ -142,6 +142,12 @@ pub enum Error {
         /// What went wrong.
         what: String,
     },
+    /// An IGES file could not be read.
+    #[error("iges file: {what}")]
+    Iges {
+        /// What went wrong.
+        what: String,
+    },
     /// An evaluation parameter is outside [0, 1].
     #[error("grid parameter {value} is outside [0, 1]")]
     ParameterOutOfRange {

@@ -45,6 +45,7 @@ mod boundary;
 pub mod cases;
 mod error;
 mod grid;
+mod iges;
 mod manufactured;
 mod problem;
 mod solve;
@@ -54,6 +55,7 @@ mod step;
 
 pub use error::Error;
 pub use grid::{ErrorNorms, PatchGrid};
+pub use iges::{read_iges, write_iges};
 pub use manufactured::{apply_operator, side_of};
 pub use problem::{Discretization, Operator, Problem, Side, SideCurve, Term};
 pub use solve::{Assembly, Method, Solution, solve};

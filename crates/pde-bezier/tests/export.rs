@@ -96,3 +96,45 @@ fn step_rejects_bad_input() {
     ));
     assert!(matches!(read_step("garbage"), Err(Error::Step { .. })));
 }
+
+#[test]
+fn iges_round_trips_exactly() {
+    for sol in solutions() {
+        let text = pde_bezier::write_iges(&sol.spline, "pde surface").unwrap();
+        for line in text.lines() {
+            assert_eq!(line.len(), 80, "{line}");
+        }
+        assert!(text.lines().last().unwrap().starts_with("S      1G"));
+        let back = pde_bezier::read_iges(&text).unwrap();
+        assert_eq!(back, sol.spline);
+    }
+}
+
+#[test]
+fn iges_rejects_bad_input() {
+    let sol = &solutions()[0];
+    let text = pde_bezier::write_iges(&sol.spline, "x").unwrap();
+    assert!(matches!(
+        pde_bezier::read_iges("short line\n"),
+        Err(Error::Iges { .. })
+    ));
+    let no_t: String = text
+        .lines()
+        .filter(|l| l.as_bytes()[72] != b'T')
+        .map(|l| format!("{l}\n"))
+        .collect();
+    assert!(matches!(
+        pde_bezier::read_iges(&no_t),
+        Err(Error::Iges { .. })
+    ));
+    let truncated: String = text
+        .lines()
+        .enumerate()
+        .filter(|(i, l)| l.as_bytes()[72] != b'P' || *i < 8)
+        .map(|(_, l)| format!("{l}\n"))
+        .collect();
+    assert!(matches!(
+        pde_bezier::read_iges(&truncated),
+        Err(Error::Iges { .. })
+    ));
+}

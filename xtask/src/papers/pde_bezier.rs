@@ -91,7 +91,10 @@ fn error_table(rows: &[Row], rms: bool) -> Table {
     if !rms {
         let _ = write!(md, " Σb², max on 401² |");
     }
-    let _ = writeln!(md, " paper: Bloor–Wilson | paper: Xu–Wang | Σb² beats both BW? |");
+    let _ = writeln!(
+        md,
+        " paper: Bloor–Wilson | paper: Xu–Wang | Σb² beats both BW? |"
+    );
     let cols = if rms { 10 } else { 11 };
     let _ = writeln!(md, "|{}", "---|".repeat(cols));
     let mut checked = Vec::new();

@@ -16,7 +16,8 @@
 //! boundary conditions fix whole rows of coefficients and are eliminated. On the same space,
 //! four [`Method`]s: the paper's Bernstein least squares, the exact ∫∫R² least squares, and
 //! the Bloor–Wilson baselines, collocation and Galerkin. The [`cases`] module holds the
-//! paper's examples with exact solutions.
+//! paper's examples with exact solutions. The result exports to CAD as one B-spline surface
+//! ([`Solution::spline`], [`write_step`] for STEP AP214, [`write_iges`] for IGES entity 128).
 //!
 //! ```
 //! use bez_core::{BezierSurface, Vector3};

@@ -45,5 +45,26 @@ fn patch_grid(c: &mut Criterion) {
     group.finish();
 }
 
-criterion_group!(benches, single_patch, patch_grid);
+fn methods_8x8(c: &mut Criterion) {
+    let mut group = c.benchmark_group("pde_bezier_8x8_c1_solve");
+    group.sample_size(10);
+    let Ok(mut case) = cases::enneper(3, 8, 8) else {
+        return;
+    };
+    case.disc.smoothness_u = 1;
+    case.disc.smoothness_v = 1;
+    let Ok(assembly) = Assembly::new(&case.problem, &case.disc) else {
+        return;
+    };
+    for method in Method::ALL {
+        group.bench_with_input(
+            BenchmarkId::from_parameter(method.name()),
+            &method,
+            |b, &method| b.iter(|| black_box(&assembly).solve(method)),
+        );
+    }
+    group.finish();
+}
+
+criterion_group!(benches, single_patch, patch_grid, methods_8x8);
 criterion_main!(benches);

@@ -220,3 +220,53 @@ fn jet(
     }
     Ok(out)
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn clamped_fit_reproduces_polynomials_and_interpolates_ends() {
+        let space = Space::new("v", 5, 3, 2, false).unwrap();
+        // A cubic: exact in the space.
+        let f = |t: f64, d: usize| -> Vector3<f64> {
+            match d {
+                0 => Vector3::new(t * t * t - t, 2.0 * t, 1.0 - t * t),
+                1 => Vector3::new(3.0 * t * t - 1.0, 2.0, -2.0 * t),
+                _ => Vector3::new(6.0 * t, 0.0, -2.0),
+            }
+        };
+        let curve = SideCurve::from_function(101, 3, f);
+        let fitted = fit("v=0", &curve, &space, 2, 3).unwrap();
+        assert!(fitted.error < 1e-13, "{}", fitted.error);
+        // A non-polynomial function: the clamped ends still interpolate value and slope.
+        let g = |t: f64, d: usize| -> Vector3<f64> {
+            let s = if d == 0 {
+                (4.0 * t).sin()
+            } else {
+                4.0 * (4.0 * t).cos()
+            };
+            Vector3::new(s, 0.0, 0.0)
+        };
+        let curve = SideCurve::from_function(101, 2, g);
+        let fitted = fit("v=0", &curve, &space, 2, 2).unwrap();
+        assert!(
+            fitted.error > 1e-9 && fitted.error < 1e-3,
+            "{}",
+            fitted.error
+        );
+        let d0 = space.end_derivatives(false, 2);
+        let d1 = space.end_derivatives(true, 2);
+        for (d, at, end) in [(&d0, 0.0, 0), (&d1, 1.0, 1)] {
+            for order in 0..2 {
+                let value: f64 = (0..space.n_coef)
+                    .map(|i| d[(order, i)] * fitted.coefs[i].x)
+                    .sum();
+                assert!(
+                    (value - g(at, order).x).abs() < 1e-12,
+                    "end {end} order {order}"
+                );
+            }
+        }
+    }
+}

@@ -136,6 +136,14 @@ pub enum Error {
         /// Smallest over largest pivot.
         pivot_ratio: f64,
     },
+    /// A knot vector decreases somewhere.
+    #[error("knot vector in {direction} decreases at index {index}: knots must be non-decreasing")]
+    DecreasingKnots {
+        /// "u" or "v".
+        direction: &'static str,
+        /// Index of the first knot smaller than its predecessor.
+        index: usize,
+    },
     /// A STEP file could not be read.
     #[error("step file: {what}")]
     Step {

@@ -39,7 +39,8 @@ impl BSplineSurface {
     /// Checks the shape: knot counts, non-decreasing knots, finite values.
     ///
     /// # Errors
-    /// [`Error::Core`] with a grid-shape error, [`Error::NonFinite`].
+    /// [`Error::Core`] with a grid-shape error, [`Error::NonFinite`],
+    /// [`Error::DecreasingKnots`].
     pub fn validate(&self) -> Result<(), Error> {
         let (cu, cv) = (self.count_u(), self.count_v());
         if cu == 0 || cv == 0 || self.points.len() != cu * cv {
@@ -51,17 +52,17 @@ impl BSplineSurface {
             }
             .into());
         }
-        for k in [&self.knots_u, &self.knots_v] {
+        for (direction, k) in [("u", &self.knots_u), ("v", &self.knots_v)] {
             if let Some(&bad) = k.iter().find(|x| !x.is_finite()) {
                 return Err(Error::NonFinite {
                     what: "knot",
                     value: bad,
                 });
             }
-            if k.windows(2).any(|w| w[1] < w[0]) {
-                return Err(Error::NonFinite {
-                    what: "decreasing knot",
-                    value: k.iter().copied().fold(f64::NAN, f64::min),
+            if let Some(index) = k.windows(2).position(|w| w[1] < w[0]) {
+                return Err(Error::DecreasingKnots {
+                    direction,
+                    index: index + 1,
                 });
             }
         }

@@ -76,6 +76,18 @@ fn step_rejects_bad_input() {
         ..s.clone()
     };
     assert!(matches!(write_step(&short, "x"), Err(Error::Core(_))));
+    let decreasing = BSplineSurface {
+        knots_v: vec![0.0, 0.5, 0.2, 1.0],
+        points: vec![Vector3::zeros(); 4],
+        ..s.clone()
+    };
+    assert_eq!(
+        write_step(&decreasing, "x"),
+        Err(Error::DecreasingKnots {
+            direction: "v",
+            index: 2
+        })
+    );
     let good = BSplineSurface {
         points: vec![Vector3::zeros(); 4],
         ..s

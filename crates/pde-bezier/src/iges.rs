@@ -179,7 +179,7 @@ pub fn read_iges(text: &str) -> Result<BSplineSurface, Error> {
     let mut data = String::new();
     let mut saw_terminate = false;
     for line in text.lines() {
-        if line.len() != 80 {
+        if !line.is_ascii() || line.len() != 80 {
             return Err(iges_err(format!(
                 "line of {} columns, expected 80",
                 line.len()

@@ -275,6 +275,9 @@ pub fn read_step(text: &str) -> Result<BSplineSurface, Error> {
     if !text.starts_with("ISO-10303-21;") {
         return Err(step_err("missing ISO-10303-21 header"));
     }
+    if end < start + 5 {
+        return Err(step_err("the DATA section ends before it starts"));
+    }
     let mut entities: HashMap<usize, (String, Vec<Param>)> = HashMap::new();
     for stmt in text[start + 5..end].split(';') {
         let stmt = stmt.trim();

@@ -107,6 +107,8 @@ fn step_rejects_bad_input() {
         Err(Error::Step { .. })
     ));
     assert!(matches!(read_step("garbage"), Err(Error::Step { .. })));
+    let reversed = "ISO-10303-21;\nENDSEC;\nEND-ISO-10303-21;\nDATA;\n";
+    assert!(matches!(read_step(reversed), Err(Error::Step { .. })));
 }
 
 #[test]
@@ -149,4 +151,45 @@ fn iges_rejects_bad_input() {
         pde_bezier::read_iges(&truncated),
         Err(Error::Iges { .. })
     ));
+}
+
+mod fuzz {
+    use super::*;
+    use proptest::prelude::*;
+
+    fn sample_texts() -> (String, String) {
+        let s = BSplineSurface {
+            degree_u: 2,
+            degree_v: 1,
+            knots_u: vec![0.0, 0.0, 0.0, 1.0, 1.0, 1.0],
+            knots_v: vec![0.0, 0.0, 1.0, 1.0],
+            points: (0..6).map(|i| Vector3::new(i as f64, 0.5, -1.0)).collect(),
+        };
+        (
+            write_step(&s, "f").unwrap(),
+            pde_bezier::write_iges(&s, "f").unwrap(),
+        )
+    }
+
+    proptest! {
+        #![proptest_config(ProptestConfig::with_cases(64))]
+
+        #[test]
+        fn readers_never_panic(junk in ".{0,200}", cut in 0usize..4000, byte in 0u8..128) {
+            let _ = read_step(&junk);
+            let _ = pde_bezier::read_iges(&junk);
+            let (step, iges) = sample_texts();
+            for text in [step, iges] {
+                let cut = cut.min(text.len());
+                let _ = read_step(&text[..cut]);
+                let _ = pde_bezier::read_iges(&text[..cut]);
+                let mut bytes = text.into_bytes();
+                let at = cut.min(bytes.len() - 1);
+                bytes[at] = byte;
+                let mutated = String::from_utf8_lossy(&bytes).into_owned();
+                let _ = read_step(&mutated);
+                let _ = pde_bezier::read_iges(&mutated);
+            }
+        }
+    }
 }

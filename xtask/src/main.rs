@@ -4,12 +4,14 @@
 //!   and writes `docs/results/<table>.md` and `.json`; with `--check` it compares the recomputed
 //!   deterministic values with the committed JSON instead and fails with a readable diff.
 //! - `cargo xtask figures [--only PAPER]` writes the papers' figures as SVG to `docs/figures/`.
+//! - `cargo xtask cad-check` reads pde-bezier's STEP and IGES export with Open CASCADE.
 #![allow(
     clippy::print_stdout,
     clippy::print_stderr,
     reason = "a command-line tool talks to its user"
 )]
 
+mod cad_check;
 mod figures;
 mod papers;
 mod plot;
@@ -48,6 +50,7 @@ fn try_main() -> Result<(), DynError> {
     match cmd {
         "tables" => tables::run(check, only),
         "figures" if !check => figures::run(only),
+        "cad-check" if !check && only.is_none() => cad_check::run(),
         _ => {
             println!("{HELP}");
             Ok(())
@@ -58,6 +61,7 @@ fn try_main() -> Result<(), DynError> {
 const HELP: &str = "usage:
   cargo xtask tables [--check] [--only PAPER]   recompute the papers' tables (--check: compare with docs/results)
   cargo xtask figures [--only PAPER]            write the papers' figures to docs/figures
+  cargo xtask cad-check                         read pde-bezier's STEP/IGES export with Open CASCADE (PyPI)
 papers: bez-subdiv, lambda-bezier, class-a, subdiv-fit, pde-bezier";
 
 /// The workspace root (the parent of this crate's directory).

@@ -7,6 +7,7 @@ use std::path::{Path, PathBuf};
 
 mod bez_core;
 mod lambda_bezier;
+mod pde_bezier;
 
 use crate::DynError;
 use crate::tables::Table;
@@ -36,6 +37,11 @@ const PAPERS: &[Paper] = &[
         name: "lambda-bezier",
         tables: Some(lambda_bezier::tables),
         figures: Some(lambda_bezier::figures),
+    },
+    Paper {
+        name: "pde-bezier",
+        tables: Some(pde_bezier::tables),
+        figures: Some(pde_bezier::figures),
     },
 ];
 

@@ -1,0 +1,245 @@
+//! IGES 5.3 export of a B-spline surface as entity 128 (rational B-spline surface, written
+//! polynomial with unit weights), and a reader for the subset we write.
+//!
+//! Entity 128 lists control points with u varying fastest (the transpose of STEP's order).
+
+use crate::error::Error;
+use crate::spline_surface::BSplineSurface;
+use bez_core::Vector3;
+
+fn iges_err(what: impl Into<String>) -> Error {
+    Error::Iges { what: what.into() }
+}
+
+fn real(x: f64) -> String {
+    format!("{x:.16E}")
+}
+
+fn hollerith(s: &str) -> String {
+    format!("{}H{s}", s.len())
+}
+
+/// Packs tokens (each ending with its delimiter) into lines of at most `width` columns.
+fn pack(tokens: &[String], width: usize) -> Vec<String> {
+    let mut lines = Vec::new();
+    let mut cur = String::new();
+    for t in tokens {
+        if !cur.is_empty() && cur.len() + t.len() > width {
+            lines.push(std::mem::take(&mut cur));
+        }
+        cur.push_str(t);
+    }
+    if !cur.is_empty() {
+        lines.push(cur);
+    }
+    lines
+}
+
+fn with_delims(items: &[String]) -> Vec<String> {
+    let n = items.len();
+    items
+        .iter()
+        .enumerate()
+        .map(|(i, s)| format!("{s}{}", if i + 1 == n { ';' } else { ',' }))
+        .collect()
+}
+
+/// Writes `surface` as an IGES 5.3 file with one entity 128.
+///
+/// # Errors
+/// The errors of [`BSplineSurface::validate`].
+pub fn write_iges(surface: &BSplineSurface, name: &str) -> Result<String, Error> {
+    surface.validate()?;
+    let name: String = name
+        .chars()
+        .filter(|c| c.is_ascii_graphic() || *c == ' ')
+        .collect();
+    let max_coord = surface
+        .points
+        .iter()
+        .flat_map(|p| p.iter().map(|x| x.abs()))
+        .fold(0.0, f64::max);
+    let global: Vec<String> = vec![
+        "1H,".to_string(),
+        "1H;".to_string(),
+        hollerith(&name),
+        hollerith(&format!("{name}.igs")),
+        hollerith("pde-bezier"),
+        hollerith("pde-bezier"),
+        "32".to_string(),
+        "38".to_string(),
+        "6".to_string(),
+        "308".to_string(),
+        "15".to_string(),
+        hollerith(&name),
+        "1.0".to_string(),
+        "2".to_string(),
+        "2HMM".to_string(),
+        "1".to_string(),
+        "1.0".to_string(),
+        "15H20000101.000000".to_string(),
+        "1.0E-7".to_string(),
+        real(max_coord.max(1.0)),
+        "0H".to_string(),
+        "0H".to_string(),
+        "11".to_string(),
+        "0".to_string(),
+        "15H20000101.000000".to_string(),
+    ];
+    let (cu, cv) = (surface.count_u(), surface.count_v());
+    let mut params: Vec<String> = vec![
+        "128".to_string(),
+        (cu - 1).to_string(),
+        (cv - 1).to_string(),
+        surface.degree_u.to_string(),
+        surface.degree_v.to_string(),
+        "0".to_string(),
+        "0".to_string(),
+        "1".to_string(),
+        "0".to_string(),
+        "0".to_string(),
+    ];
+    params.extend(surface.knots_u.iter().map(|&k| real(k)));
+    params.extend(surface.knots_v.iter().map(|&k| real(k)));
+    params.extend(std::iter::repeat_n("1.0".to_string(), cu * cv));
+    for j in 0..cv {
+        for i in 0..cu {
+            let p = surface.points[i * cv + j];
+            params.extend([real(p.x), real(p.y), real(p.z)]);
+        }
+    }
+    let first = |k: &[f64]| k.first().copied().unwrap_or(0.0);
+    let last = |k: &[f64]| k.last().copied().unwrap_or(1.0);
+    params.extend([
+        real(first(&surface.knots_u)),
+        real(last(&surface.knots_u)),
+        real(first(&surface.knots_v)),
+        real(last(&surface.knots_v)),
+    ]);
+    let start = ["pde-bezier B-spline surface".to_string()];
+    let g_lines = pack(&with_delims(&global), 72);
+    let p_lines = pack(&with_delims(&params), 64);
+    let mut out = String::new();
+    let mut push = |body: &str, letter: char, seq: usize| {
+        out.push_str(&format!("{body:<72}{letter}{seq:>7}\n"));
+    };
+    for (i, l) in start.iter().enumerate() {
+        push(l, 'S', i + 1);
+    }
+    for (i, l) in g_lines.iter().enumerate() {
+        push(l, 'G', i + 1);
+    }
+    let field = |x: &str| format!("{x:>8}");
+    let d1 = ["128", "1", "0", "0", "0", "0", "0", "0", "00000000"]
+        .iter()
+        .map(|x| field(x))
+        .collect::<String>();
+    let d2 = [
+        "128".to_string(),
+        "0".to_string(),
+        "0".to_string(),
+        p_lines.len().to_string(),
+        "0".to_string(),
+        String::new(),
+        String::new(),
+        "SURFACE".to_string(),
+        "0".to_string(),
+    ]
+    .iter()
+    .map(|x| field(x))
+    .collect::<String>();
+    push(&d1, 'D', 1);
+    push(&d2, 'D', 2);
+    for (i, l) in p_lines.iter().enumerate() {
+        push(&format!("{l:<64}{:>8}", 1), 'P', i + 1);
+    }
+    let t = format!(
+        "S{:>7}G{:>7}D{:>7}P{:>7}",
+        start.len(),
+        g_lines.len(),
+        2,
+        p_lines.len()
+    );
+    push(&t, 'T', 1);
+    Ok(out)
+}
+
+fn parse_real(s: &str) -> Result<f64, Error> {
+    s.trim()
+        .replace(['D', 'd'], "E")
+        .parse()
+        .map_err(|_| iges_err(format!("bad real {s}")))
+}
+
+/// Reads the first entity 128 of an IGES file written by [`write_iges`] (unit weights).
+///
+/// # Errors
+/// [`Error::Iges`] for malformed lines, a missing entity, non-unit weights or bad counts.
+pub fn read_iges(text: &str) -> Result<BSplineSurface, Error> {
+    let mut data = String::new();
+    let mut saw_terminate = false;
+    for line in text.lines() {
+        if !line.is_ascii() || line.len() != 80 {
+            return Err(iges_err(format!(
+                "line of {} columns, expected 80",
+                line.len()
+            )));
+        }
+        match line.as_bytes()[72] {
+            b'P' => data.push_str(&line[..64]),
+            b'T' => saw_terminate = true,
+            b'S' | b'G' | b'D' => {}
+            other => return Err(iges_err(format!("unknown section '{}'", other as char))),
+        }
+    }
+    if !saw_terminate {
+        return Err(iges_err("no terminate section"));
+    }
+    let record = data
+        .split(';')
+        .next()
+        .ok_or_else(|| iges_err("no parameter record"))?;
+    let tokens: Vec<&str> = record.split(',').map(str::trim).collect();
+    let int = |i: usize| -> Result<usize, Error> {
+        tokens
+            .get(i)
+            .and_then(|t| t.parse().ok())
+            .ok_or_else(|| iges_err(format!("bad integer parameter {i}")))
+    };
+    if int(0)? != 128 {
+        return Err(iges_err("first entity is not 128"));
+    }
+    let (k1, k2, m1, m2) = (int(1)?, int(2)?, int(3)?, int(4)?);
+    let (cu, cv) = (k1 + 1, k2 + 1);
+    let mut pos = 10;
+    let mut take = |count: usize| -> Result<Vec<f64>, Error> {
+        let slice = tokens
+            .get(pos..pos + count)
+            .ok_or_else(|| iges_err("parameter record too short"))?;
+        pos += count;
+        slice.iter().map(|t| parse_real(t)).collect()
+    };
+    let knots_u = take(cu + m1 + 1)?;
+    let knots_v = take(cv + m2 + 1)?;
+    let weights = take(cu * cv)?;
+    if weights.iter().any(|&w| w != 1.0) {
+        return Err(iges_err("rational surfaces are not supported"));
+    }
+    let coords = take(3 * cu * cv)?;
+    let mut points = vec![Vector3::zeros(); cu * cv];
+    for j in 0..cv {
+        for i in 0..cu {
+            let k = 3 * (j * cu + i);
+            points[i * cv + j] = Vector3::new(coords[k], coords[k + 1], coords[k + 2]);
+        }
+    }
+    let surface = BSplineSurface {
+        degree_u: m1,
+        degree_v: m2,
+        knots_u,
+        knots_v,
+        points,
+    };
+    surface.validate()?;
+    Ok(surface)
+}

@@ -1,0 +1,218 @@
+//! Every typed error of the public API.
+
+#![allow(clippy::unwrap_used, reason = "test helpers unwrap known-good inputs")]
+
+use bez_core::{BezierCurve, BezierSurface, Vector3};
+use pde_bezier::{Discretization, Error, Method, Operator, Problem, Side, SideCurve, Term, solve};
+
+fn line(a: Vector3<f64>, b: Vector3<f64>) -> SideCurve {
+    SideCurve::Bezier(BezierCurve::new(vec![a, b]).unwrap())
+}
+
+fn unit_square_problem() -> Problem {
+    let x = BezierSurface::from_flat(
+        1,
+        1,
+        vec![
+            Vector3::new(0.0, 0.0, 0.0),
+            Vector3::new(0.0, 1.0, 0.0),
+            Vector3::new(1.0, 0.0, 0.0),
+            Vector3::new(1.0, 1.0, 0.0),
+        ],
+    )
+    .unwrap();
+    Problem::manufactured(Operator::second_order(1.0, 1.0).unwrap(), &x).unwrap()
+}
+
+#[test]
+fn operator_rejects_odd_and_high_orders() {
+    for (du, dv) in [(1, 0), (2, 1), (4, 4), (0, 0)] {
+        let err = Operator::new(vec![Term { coeff: 1.0, du, dv }]).unwrap_err();
+        assert!(matches!(err, Error::UnsupportedOrder { .. }), "{du} {dv}");
+    }
+    assert_eq!(Operator::new(vec![]).unwrap_err(), Error::EmptyOperator);
+    assert!(matches!(
+        Operator::second_order(f64::NAN, 1.0),
+        Err(Error::NonFinite { .. })
+    ));
+}
+
+#[test]
+fn corner_mismatch_is_reported() {
+    let mut p = unit_square_problem();
+    p.v0 = Side::Fixed(vec![line(
+        Vector3::new(0.0, 0.0, 0.5),
+        Vector3::new(1.0, 0.0, 0.0),
+    )]);
+    let err = solve(
+        &p,
+        &Discretization::single(3, 3),
+        Method::BernsteinLeastSquares,
+    )
+    .unwrap_err();
+    assert!(
+        matches!(err, Error::CornerMismatch { i: 0, j: 0, .. }),
+        "{err}"
+    );
+}
+
+#[test]
+fn wrong_side_data_count_is_reported() {
+    let mut p = unit_square_problem();
+    p.operator = Operator::bloor_wilson(1.0).unwrap();
+    let err = solve(&p, &Discretization::single(5, 5), Method::Galerkin).unwrap_err();
+    assert!(matches!(
+        err,
+        Error::SideDataCount {
+            expected: 2,
+            given: 1,
+            ..
+        }
+    ));
+}
+
+#[test]
+fn degree_too_low_for_the_boundary_rows() {
+    let x = BezierSurface::from_flat(1, 1, vec![Vector3::zeros(); 4]).unwrap();
+    let p = Problem::manufactured(Operator::bloor_wilson(1.0).unwrap(), &x).unwrap();
+    let err = solve(
+        &p,
+        &Discretization::single(2, 5),
+        Method::BernsteinLeastSquares,
+    )
+    .unwrap_err();
+    assert!(
+        matches!(err, Error::DegreeTooLow { direction: "u", .. }),
+        "{err}"
+    );
+}
+
+#[test]
+fn low_continuity_is_rejected() {
+    let x = BezierSurface::from_flat(1, 1, vec![Vector3::zeros(); 4]).unwrap();
+    let p = Problem::manufactured(Operator::bloor_wilson(1.0).unwrap(), &x).unwrap();
+    let disc = Discretization {
+        degree_u: 5,
+        degree_v: 5,
+        patches_u: 2,
+        patches_v: 1,
+        smoothness_u: 2,
+        smoothness_v: 0,
+    };
+    let err = solve(&p, &disc, Method::BernsteinLeastSquares).unwrap_err();
+    assert!(matches!(err, Error::Smoothness { min: 3, .. }), "{err}");
+    let disc = Discretization {
+        smoothness_u: 5,
+        ..disc
+    };
+    let err = solve(&p, &disc, Method::BernsteinLeastSquares).unwrap_err();
+    assert!(matches!(err, Error::Smoothness { .. }), "{err}");
+}
+
+#[test]
+fn underdetermined_problem_is_singular() {
+    // Only u = 0 fixed, everything else free: Laplace's residual vanishes on many surfaces.
+    let mut p = unit_square_problem();
+    p.u1 = Side::Free;
+    p.v0 = Side::Free;
+    p.v1 = Side::Free;
+    for method in Method::ALL {
+        let err = solve(&p, &Discretization::single(4, 4), method).unwrap_err();
+        assert!(
+            matches!(err, Error::SingularSystem { .. }),
+            "{method:?}: {err}"
+        );
+    }
+}
+
+#[test]
+fn periodic_mismatch_and_piece_count() {
+    let mut p = unit_square_problem();
+    p.v0 = Side::Periodic;
+    let err = solve(&p, &Discretization::single(4, 4), Method::Galerkin).unwrap_err();
+    assert_eq!(err, Error::PeriodicMismatch { side: "v=0" });
+    let mut p = unit_square_problem();
+    p.u0 = Side::Fixed(vec![SideCurve::Pieces(vec![
+        BezierCurve::new(vec![Vector3::zeros(), Vector3::new(0.0, 1.0, 0.0)]).unwrap(),
+    ])]);
+    let disc = Discretization {
+        patches_v: 2,
+        smoothness_v: 1,
+        ..Discretization::single(4, 4)
+    };
+    let err = solve(&p, &disc, Method::Galerkin).unwrap_err();
+    assert!(
+        matches!(
+            err,
+            Error::PieceCount {
+                given: 1,
+                expected: 2,
+                ..
+            }
+        ),
+        "{err}"
+    );
+    let disc = Discretization {
+        patches_u: 0,
+        ..Discretization::single(4, 4)
+    };
+    assert!(matches!(
+        solve(&p, &disc, Method::Galerkin),
+        Err(Error::NoPatches { .. })
+    ));
+}
+
+#[test]
+fn sampled_data_needs_samples_and_jets() {
+    let mut p = unit_square_problem();
+    p.u0 = Side::Fixed(vec![SideCurve::Sampled {
+        values: vec![Vector3::zeros(); 3],
+        start_jet: vec![Vector3::zeros()],
+        end_jet: vec![Vector3::new(0.0, 1.0, 0.0)],
+    }]);
+    let err = solve(&p, &Discretization::single(5, 5), Method::Galerkin).unwrap_err();
+    assert!(
+        matches!(
+            err,
+            Error::TooFewSamples {
+                what: "samples",
+                ..
+            }
+        ),
+        "{err}"
+    );
+    p.u0 = Side::Fixed(vec![SideCurve::Sampled {
+        values: vec![Vector3::zeros(); 30],
+        start_jet: vec![],
+        end_jet: vec![],
+    }]);
+    let err = solve(&p, &Discretization::single(5, 5), Method::Galerkin).unwrap_err();
+    assert!(
+        matches!(
+            err,
+            Error::TooFewSamples {
+                what: "end derivatives",
+                ..
+            }
+        ),
+        "{err}"
+    );
+    p.u0 = Side::Fixed(vec![SideCurve::Sampled {
+        values: vec![Vector3::new(f64::NAN, 0.0, 0.0); 30],
+        start_jet: vec![Vector3::zeros()],
+        end_jet: vec![Vector3::new(0.0, 1.0, 0.0)],
+    }]);
+    let err = solve(&p, &Discretization::single(5, 5), Method::Galerkin).unwrap_err();
+    assert!(matches!(err, Error::NonFinite { .. }), "{err}");
+}
+
+#[test]
+fn grid_eval_rejects_out_of_range() {
+    let p = unit_square_problem();
+    let sol = solve(&p, &Discretization::single(3, 3), Method::Collocation).unwrap();
+    assert!(matches!(
+        sol.surface.eval(1.5, 0.0),
+        Err(Error::ParameterOutOfRange { .. })
+    ));
+    assert!(sol.surface.patch(1, 0).is_none());
+}

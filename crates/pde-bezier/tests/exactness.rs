@@ -1,0 +1,100 @@
+//! Polynomial exactness of every method, single patch and patch grids.
+
+#![allow(clippy::unwrap_used, reason = "test helpers unwrap known-good inputs")]
+
+use bez_core::{BezierSurface, Vector3};
+use pde_bezier::{Discretization, Method, Operator, Problem, solve};
+
+fn poly_surface(du: usize, dv: usize, seed: u64) -> BezierSurface<3> {
+    let mut s = seed;
+    let mut next = || {
+        s = s
+            .wrapping_mul(6364136223846793005)
+            .wrapping_add(1442695040888963407);
+        ((s >> 33) as f64 / (1u64 << 31) as f64) * 2.0 - 1.0
+    };
+    let pts = (0..(du + 1) * (dv + 1))
+        .map(|_| Vector3::new(next(), next(), next()))
+        .collect();
+    BezierSurface::from_flat(du, dv, pts).unwrap()
+}
+
+fn assert_reproduces(op: Operator, x: &BezierSurface<3>, disc: Discretization, tol: f64) {
+    let problem = Problem::manufactured(op, x).unwrap();
+    for method in Method::ALL {
+        let sol = solve(&problem, &disc, method).unwrap();
+        let err = sol
+            .surface
+            .error_norms(|u, v| x.eval(u, v).unwrap(), 20)
+            .unwrap();
+        assert!(err.max < tol, "{method:?} {disc:?}: max error {}", err.max);
+        assert!(
+            sol.residual_bound < 1e3 * tol,
+            "{method:?}: residual {}",
+            sol.residual_bound
+        );
+    }
+}
+
+#[test]
+fn single_patch_laplace_reproduces_polynomial() {
+    let x = poly_surface(4, 3, 1);
+    let op = Operator::second_order(1.0, 2.5).unwrap();
+    assert_reproduces(op, &x, Discretization::single(5, 5), 1e-10);
+}
+
+#[test]
+fn single_patch_fourth_order_reproduces_polynomial() {
+    let x = poly_surface(5, 4, 2);
+    let op = Operator::bloor_wilson(0.8).unwrap();
+    assert_reproduces(op, &x, Discretization::single(6, 6), 1e-9);
+}
+
+#[test]
+fn single_patch_sixth_order_reproduces_polynomial() {
+    let x = poly_surface(6, 6, 3);
+    let op = Operator::new(vec![
+        pde_bezier::Term {
+            coeff: 1.0,
+            du: 6,
+            dv: 0,
+        },
+        pde_bezier::Term {
+            coeff: 0.5,
+            du: 2,
+            dv: 4,
+        },
+        pde_bezier::Term {
+            coeff: 1.0,
+            du: 0,
+            dv: 6,
+        },
+    ])
+    .unwrap();
+    assert_reproduces(op, &x, Discretization::single(7, 7), 1e-8);
+}
+
+#[test]
+fn patch_grid_reproduces_polynomial() {
+    let x = poly_surface(4, 4, 4);
+    let op = Operator::second_order(1.0, 1.0).unwrap();
+    let disc = Discretization {
+        degree_u: 5,
+        degree_v: 4,
+        patches_u: 3,
+        patches_v: 2,
+        smoothness_u: 2,
+        smoothness_v: 1,
+    };
+    assert_reproduces(op, &x, disc, 1e-10);
+    let op4 = Operator::bloor_wilson(1.0).unwrap();
+    let disc4 = Discretization {
+        degree_u: 5,
+        degree_v: 5,
+        patches_u: 2,
+        patches_v: 3,
+        smoothness_u: 3,
+        smoothness_v: 4,
+    };
+    assert_reproduces(op4, &x, disc4, 1e-9);
+}

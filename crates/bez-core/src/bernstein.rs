@@ -63,8 +63,9 @@ pub fn bernstein(n: usize, i: usize, t: f64) -> f64 {
     binomial(n, i) * powi(t, i) * powi(1.0 - t, n - i)
 }
 
-fn powi(x: f64, k: usize) -> f64 {
-    // Repeated squaring without the i32 conversion of `f64::powi`.
+/// xᵏ by repeated squaring (no i32 conversion as in `f64::powi`).
+#[inline]
+pub(crate) fn powi(x: f64, k: usize) -> f64 {
     let (mut base, mut e, mut acc) = (x, k, 1.0);
     while e > 0 {
         if e & 1 == 1 {

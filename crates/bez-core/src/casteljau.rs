@@ -7,7 +7,7 @@
 use core::ops::{Add, Mul, Sub};
 
 use crate::CoreError;
-use crate::bernstein::binomial;
+use crate::bernstein::{binomial, powi};
 
 /// What a control point must support: affine combinations with `f64` weights, and a zero.
 ///
@@ -199,19 +199,6 @@ impl<T: ControlPoint> HornerBernstein<T> {
             Some(acc * powi(t, n))
         }
     }
-}
-
-#[inline]
-fn powi(x: f64, k: usize) -> f64 {
-    let (mut base, mut e, mut acc) = (x, k, 1.0);
-    while e > 0 {
-        if e & 1 == 1 {
-            acc *= base;
-        }
-        base *= base;
-        e >>= 1;
-    }
-    acc
 }
 
 /// Error-free transformation a + b = s + e (Knuth's TwoSum).

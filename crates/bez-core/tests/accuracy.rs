@@ -6,23 +6,10 @@
 )]
 
 use bez_core::{BezierCurve, SVector, compensated_de_casteljau, de_casteljau};
-use num_bigint::BigInt;
-use num_rational::BigRational;
+mod common;
+
+use common::{Q, binom, q};
 use num_traits::{One, ToPrimitive, Zero};
-
-type Q = BigRational;
-
-fn q(x: f64) -> Q {
-    Q::from_float(x).expect("finite")
-}
-
-fn binom(n: usize, k: usize) -> Q {
-    let mut c = BigInt::one();
-    for i in 1..=k {
-        c = c * BigInt::from(n - k + i) / BigInt::from(i);
-    }
-    Q::from_integer(c)
-}
 
 /// Exact Bernstein evaluation Σ cᵢ C(n,i) tⁱ (1−t)ⁿ⁻ⁱ in rationals.
 fn exact_eval(c: &[Q], t: &Q) -> Q {

@@ -7,16 +7,11 @@
 )]
 
 use bez_core::{BezierCurve, Vector2, proptest_support::control_points};
-use num_bigint::BigInt;
-use num_rational::BigRational;
+mod common;
+
+use common::{Q, binom, q};
 use num_traits::{FromPrimitive, One, ToPrimitive, Zero};
 use proptest::prelude::*;
-
-type Q = BigRational;
-
-fn q(x: f64) -> Q {
-    Q::from_float(x).expect("finite")
-}
 
 fn to_q(p: &[Vector2<f64>]) -> Vec<[Q; 2]> {
     p.iter().map(|v| [q(v.x), q(v.y)]).collect()
@@ -40,14 +35,6 @@ fn casteljau_levels(p: &[[Q; 2]], t: &Q) -> (Vec<[Q; 2]>, Vec<[Q; 2]>) {
     }
     right_rev.reverse();
     (left, right_rev)
-}
-
-fn binom(n: usize, k: usize) -> Q {
-    let mut c = BigInt::one();
-    for i in 1..=k {
-        c = c * BigInt::from(n - k + i) / BigInt::from(i);
-    }
-    Q::from_integer(c)
 }
 
 fn close(ours: &Vector2<f64>, exact: &[Q; 2], scale: f64) -> bool {

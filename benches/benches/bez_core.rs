@@ -63,6 +63,9 @@ fn versus_kurbo(c: &mut Criterion) {
     );
     let mut g = c.benchmark_group("cubic_vs_kurbo");
     g.bench_function("bezkit eval", |b| b.iter(|| ours.eval(black_box(0.37))));
+    g.bench_function("bezkit eval (slice kernel)", |b| {
+        b.iter(|| bez_core::de_casteljau(black_box(p), black_box(0.37)));
+    });
     g.bench_function("kurbo eval", |b| b.iter(|| theirs.eval(black_box(0.37))));
     g.bench_function("bezkit split", |b| b.iter(|| ours.split(black_box(0.37))));
     let mut left = [SVector::<f64, 2>::zeros(); 4];

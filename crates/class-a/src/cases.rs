@@ -1,0 +1,167 @@
+//! Seeded data sets and the figure cases shared by tests, benchmarks and the xtask.
+
+use bez_core::{Vector2, Vector3};
+use nalgebra::Matrix3;
+use rand::{RngExt, SeedableRng};
+use rand_chacha::ChaCha8Rng;
+
+use crate::{rotation, typical_matrix2, typical_planar_margin};
+
+/// A random Class A (s, θ) pair with |θ| ≤ θ_max: s cos θ ≥ 1 (with s ≤ 2) or s ≤ cos θ (s ≥ 0.5).
+fn random_scale_angle(rng: &mut ChaCha8Rng, theta_max: f64) -> (f64, f64) {
+    loop {
+        let theta = rng.random_range(0.01..theta_max)
+            * if rng.random_range(0.0..1.0) < 0.5 {
+                -1.0
+            } else {
+                1.0
+            };
+        let s = if rng.random_range(0.0..1.0) < 0.5 {
+            rng.random_range(1.0..2.0)
+        } else {
+            rng.random_range(0.5..1.0)
+        };
+        if typical_planar_margin(s, theta) >= 1e-3 {
+            return (s, theta);
+        }
+    }
+}
+
+/// `count` feasible planar inputs (α₀, α₁, α₂, n), made from random typical curves (s, θ) with
+/// n ∈ [3, 12], total turn < π, first leg random: α₀ = b₀, α₁ = b₁, α₂ = bₙ... with α₁ on the
+/// intersection of the end tangents (b₀b₁ and bₙ₋₁bₙ extended). Seeded by `seed`.
+#[must_use]
+pub fn random_planar_inputs(count: usize, seed: u64) -> Vec<([Vector2<f64>; 3], usize)> {
+    let mut rng = ChaCha8Rng::seed_from_u64(seed);
+    let mut out = Vec::with_capacity(count);
+    while out.len() < count {
+        let n = rng.random_range(3..13);
+        let (s, theta) = random_scale_angle(&mut rng, 2.8 / (n - 1) as f64);
+        let m = typical_matrix2(s, theta);
+        let b0 = Vector2::new(rng.random_range(-1.0..1.0), rng.random_range(-1.0..1.0));
+        let phi: f64 = rng.random_range(-3.0..3.0);
+        let mut leg = Vector2::new(phi.cos(), phi.sin()) * rng.random_range(0.2..2.0);
+        let d0 = leg;
+        let mut p = b0;
+        for _ in 0..n - 1 {
+            p += leg;
+            leg = m * leg;
+        }
+        let d_last = leg;
+        let bn = p + leg;
+        // α₁ = b₀ + a d₀ = bₙ − c d_last: solve the 2×2 system.
+        let det = d0.x * (-d_last.y) - d0.y * (-d_last.x);
+        if det.abs() < 1e-9 {
+            continue;
+        }
+        let r = bn - b0;
+        let a = (r.x * (-d_last.y) - r.y * (-d_last.x)) / det;
+        if !(a > 0.0 && a.is_finite()) {
+            continue;
+        }
+        out.push(([b0, b0 + d0 * a, bn], n));
+    }
+    out
+}
+
+/// `count` feasible spatial inputs (α₀..α₃, n) from random typical spatial curves with
+/// s ∈ [1, 1.6], s cos θ ≥ 1.001, random axis, n ∈ [3, 10]: α₀ = b₀, α₁ = b₁, α₂ = bₙ₋₁, α₃ = bₙ.
+#[must_use]
+pub fn random_spatial_inputs(count: usize, seed: u64) -> Vec<([Vector3<f64>; 4], usize)> {
+    let mut rng = ChaCha8Rng::seed_from_u64(seed);
+    let mut out = Vec::with_capacity(count);
+    while out.len() < count {
+        let n = rng.random_range(3..11);
+        let s: f64 = rng.random_range(1.0..1.6);
+        let theta_max = (1.001 / s).min(1.0).acos().min(2.8 / (n - 1) as f64);
+        if theta_max < 0.02 {
+            continue;
+        }
+        let theta = rng.random_range(0.01..theta_max);
+        let axis = random_unit(&mut rng);
+        let v0 = random_unit(&mut rng);
+        if axis.cross(&v0).norm() < 0.2 {
+            continue;
+        }
+        let m: Matrix3<f64> = rotation(&axis, theta) * s;
+        let mut p = Vector3::zeros();
+        let mut leg = v0;
+        let mut pts = vec![p];
+        for _ in 0..n {
+            p += leg;
+            pts.push(p);
+            leg = m * leg;
+        }
+        out.push(([pts[0], pts[1], pts[n - 1], pts[n]], n));
+    }
+    out
+}
+
+fn random_unit(rng: &mut ChaCha8Rng) -> Vector3<f64> {
+    loop {
+        let v = Vector3::new(
+            rng.random_range(-1.0..1.0),
+            rng.random_range(-1.0..1.0),
+            rng.random_range(-1.0..1.0),
+        );
+        let n = v.norm();
+        if n > 0.1 && n <= 1.0 {
+            return v / n;
+        }
+    }
+}
+
+/// Fig. 5: Farin's example matrix as printed in the paper.
+#[must_use]
+pub fn fig5_matrix() -> Matrix3<f64> {
+    Matrix3::new(2.58, -0.04, 0.89, 0.45, 2.13, 0.45, 0.0, 0.0, 2.21)
+}
+
+/// Fig. 5 start vector: the printed V = [−1, 1] is 2-D; we use (−1, 1, 1), which has a
+/// component along the third axis and gives a genuinely spatial curve (NOTES).
+#[must_use]
+pub fn fig5_start() -> Vector3<f64> {
+    Vector3::new(-1.0, 1.0, 1.0)
+}
+
+/// Fig. 6 points (degree 49): the paper's coordinates are not printed; a documented triangle.
+#[must_use]
+pub fn fig6_points() -> [Vector2<f64>; 3] {
+    [
+        Vector2::new(0.0, 0.0),
+        Vector2::new(6.0, 0.0),
+        Vector2::new(8.0, 5.0),
+    ]
+}
+
+/// Fig. 7 points (degree 9, δ₀..δ₃ = 0.1).
+#[must_use]
+pub fn fig7_points() -> [Vector2<f64>; 3] {
+    [
+        Vector2::new(0.0, 0.0),
+        Vector2::new(4.0, 0.0),
+        Vector2::new(5.0, 3.5),
+    ]
+}
+
+/// Fig. 8 points (degree 7).
+#[must_use]
+pub fn fig8_points() -> [Vector3<f64>; 4] {
+    [
+        Vector3::new(0.0, 0.0, 0.0),
+        Vector3::new(3.0, 0.0, 0.0),
+        Vector3::new(5.0, 2.0, 1.5),
+        Vector3::new(5.5, 3.5, 3.0),
+    ]
+}
+
+/// Fig. 9 points (degree 4, δ = (0, 0.15, 0, 0.5)).
+#[must_use]
+pub fn fig9_points() -> [Vector3<f64>; 4] {
+    [
+        Vector3::new(0.0, 0.0, 0.0),
+        Vector3::new(3.0, 0.0, 0.0),
+        Vector3::new(4.5, 1.5, 1.0),
+        Vector3::new(5.0, 3.0, 2.0),
+    ]
+}

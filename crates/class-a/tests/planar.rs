@@ -3,6 +3,10 @@
 use bez_core::Vector2;
 use class_a::*;
 
+#[allow(
+    clippy::unwrap_used,
+    reason = "test helper: a failure is a test failure"
+)]
 fn check_interpolation(a: &[Vector2<f64>; 3], c: &TypicalPlanar, tol: f64) {
     let curve = c.curve().unwrap();
     let scale = (a[2] - a[0]).norm();

@@ -13,6 +13,10 @@ fn rotation_maps_v0_to_v1() {
     assert!((c.axis.dot(&c.v0) - c.axis.dot(&v1)).abs() < 1e-12);
 }
 
+#[allow(
+    clippy::unwrap_used,
+    reason = "test helper: a failure is a test failure"
+)]
 fn check(a: &[Vector3<f64>; 4], c: &TypicalSpatial) {
     let curve = c.curve().unwrap();
     let p = curve.points();

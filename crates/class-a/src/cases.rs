@@ -1,11 +1,14 @@
 //! Seeded data sets and the figure cases shared by tests, benchmarks and the xtask.
 
-use bez_core::{Vector2, Vector3};
+use bez_core::{BezierCurve, Vector2, Vector3};
 use nalgebra::Matrix3;
 use rand::{RngExt, SeedableRng};
 use rand_chacha::ChaCha8Rng;
 
-use crate::{rotation, typical_matrix2, typical_planar_margin};
+use crate::{
+    ClassAError, TypicalPlanar, TypicalSpatial, class_a_curve, perturb2, perturb3, rotation,
+    typical_matrix2, typical_planar_margin,
+};
 
 /// A random Class A (s, θ) pair with |θ| ≤ θ_max: s cos θ ≥ 1 (with s ≤ 2) or s ≤ cos θ (s ≥ 0.5).
 fn random_scale_angle(rng: &mut ChaCha8Rng, theta_max: f64) -> (f64, f64) {
@@ -164,4 +167,80 @@ pub fn fig9_points() -> [Vector3<f64>; 4] {
         Vector3::new(4.5, 1.5, 1.0),
         Vector3::new(5.0, 3.0, 2.0),
     ]
+}
+
+/// Fig. 5 curve: degree 6 from b₀ = 0, Δb₀ = [`fig5_start`], M = [`fig5_matrix`].
+///
+/// # Errors
+/// Never for these constants; propagated from [`class_a_curve`].
+pub fn fig5_curve() -> Result<BezierCurve<3>, ClassAError> {
+    class_a_curve(&Vector3::zeros(), &fig5_start(), &fig5_matrix(), 6)
+}
+
+/// Fig. 6: the typical planar curve of degree 49 through [`fig6_points`].
+///
+/// # Errors
+/// Propagated from [`TypicalPlanar::from_points`].
+pub fn fig6_typical() -> Result<TypicalPlanar, ClassAError> {
+    let a = fig6_points();
+    TypicalPlanar::from_points(&a[0], &a[1], &a[2], 49)
+}
+
+/// Perturbation factors of Fig. 7.
+pub const FIG7_DELTA: [f64; 4] = [0.1; 4];
+/// Perturbation factors of Fig. 9.
+pub const FIG9_DELTA: [f64; 4] = [0.0, 0.15, 0.0, 0.5];
+
+/// Fig. 7: the typical planar curve of degree 9 through [`fig7_points`], then M perturbed by
+/// [`FIG7_DELTA`] ([`perturb2`]) with the same b₀ and Δb₀ (the end point then moves: the paper
+/// does not say how the general curve is fitted to the points).
+///
+/// # Errors
+/// Propagated from [`TypicalPlanar::from_points`].
+pub fn fig7_general() -> Result<(TypicalPlanar, BezierCurve<2>), ClassAError> {
+    let a = fig7_points();
+    let t = TypicalPlanar::from_points(&a[0], &a[1], &a[2], 9)?;
+    let c = class_a_curve(
+        &t.b0,
+        &(t.mu * t.length),
+        &perturb2(&t.matrix(), FIG7_DELTA),
+        9,
+    )?;
+    Ok((t, c))
+}
+
+/// Fig. 8: the typical spatial curve of degree 7 through [`fig8_points`].
+///
+/// # Errors
+/// Propagated from [`TypicalSpatial::from_points`].
+pub fn fig8_typical() -> Result<TypicalSpatial, ClassAError> {
+    TypicalSpatial::from_points(&fig8_points(), 7)
+}
+
+/// Fig. 9: the typical spatial curve of degree 4 through [`fig9_points`], M perturbed by
+/// [`FIG9_DELTA`] ([`perturb3`]) with the same b₀ and Δb₀.
+///
+/// # Errors
+/// Propagated from [`TypicalSpatial::from_points`].
+pub fn fig9_general() -> Result<(TypicalSpatial, BezierCurve<3>), ClassAError> {
+    let t = TypicalSpatial::from_points(&fig9_points(), 4)?;
+    let c = class_a_curve(
+        &t.b0,
+        &(t.v0 * t.length),
+        &perturb3(&t.matrix(), FIG9_DELTA),
+        4,
+    )?;
+    Ok((t, c))
+}
+
+/// Relative end-point error |bₙ − α_last| / |α_last − α₀| of a curve built for the points `a`.
+#[must_use]
+pub fn endpoint_error<const D: usize>(
+    a: &[bez_core::SVector<f64, D>],
+    curve: &BezierCurve<D>,
+) -> f64 {
+    match (a.first(), a.last()) {
+        (Some(first), Some(last)) => (curve.end() - last).norm() / (last - first).norm(),
+        _ => f64::INFINITY,
+    }
 }

@@ -184,3 +184,20 @@ fn perturbed_matrices_are_checked() {
     assert_eq!(m3[(1, 1)], 2.63);
     assert_eq!(m3[(2, 2)], 2.21);
 }
+
+#[test]
+fn figure_cases_build() {
+    let c5 = cases::fig5_curve().unwrap();
+    assert!(
+        c5.torsion(0.5).unwrap().abs() > 1e-6,
+        "Fig. 5 start vector must give a spatial curve"
+    );
+    let t6 = cases::fig6_typical().unwrap();
+    assert!(cases::endpoint_error(&cases::fig6_points(), &t6.curve().unwrap()) < 1e-9);
+    let (_, c7) = cases::fig7_general().unwrap();
+    assert!(curvature_certificate(&c7).is_ok());
+    let t8 = cases::fig8_typical().unwrap();
+    assert!(cases::endpoint_error(&cases::fig8_points(), &t8.curve().unwrap()) < 1e-9);
+    let (_, c9) = cases::fig9_general().unwrap();
+    assert!(torsion_certificate(&c9).is_ok());
+}

@@ -147,25 +147,27 @@ pub fn fig7_points() -> [Vector2<f64>; 3] {
     ]
 }
 
-/// Fig. 8 points (degree 7).
+/// Fig. 8 points (degree 7): b₀, b₁, b₆, b₇ of the typical curve with s = 1.2, θ = 0.3,
+/// axis ∝ (0.3, 0.2, 1), Δb₀ = (1, 0, 0.2), rounded to 0.01 (the paper prints no coordinates).
 #[must_use]
 pub fn fig8_points() -> [Vector3<f64>; 4] {
     [
         Vector3::new(0.0, 0.0, 0.0),
-        Vector3::new(3.0, 0.0, 0.0),
-        Vector3::new(5.0, 2.0, 1.5),
-        Vector3::new(5.5, 3.5, 3.0),
+        Vector3::new(1.0, 0.0, 0.2),
+        Vector3::new(6.21, 6.54, 1.79),
+        Vector3::new(6.12, 9.44, 2.73),
     ]
 }
 
-/// Fig. 9 points (degree 4, δ = (0, 0.15, 0, 0.5)).
+/// Fig. 9 points (degree 4, δ = (0, 0.15, 0, 0.5)): b₀, b₁, b₃, b₄ of the typical curve with
+/// s = 1.3, θ = 0.35, axis ∝ (0.1, −0.3, 1), Δb₀ = (1, 0.1, 0.3), rounded to 0.01.
 #[must_use]
 pub fn fig9_points() -> [Vector3<f64>; 4] {
     [
         Vector3::new(0.0, 0.0, 0.0),
-        Vector3::new(3.0, 0.0, 0.0),
-        Vector3::new(4.5, 1.5, 1.0),
-        Vector3::new(5.0, 3.0, 2.0),
+        Vector3::new(1.0, 0.1, 0.3),
+        Vector3::new(3.25, 1.72, 1.67),
+        Vector3::new(4.04, 3.48, 2.93),
     ]
 }
 

@@ -88,14 +88,13 @@ impl PlanarGeometry {
     }
 }
 
-/// p(s) = Σ_{j=0}^{n−1} sin(jθ − δ) sʲ by Horner (s ≤ 1), or its reversal sⁿ⁻¹p(1/s) (u = 1/s).
-fn poly(theta: f64, delta: f64, n: usize, x: f64, reversed: bool) -> f64 {
-    let mut acc = 0.0;
-    for j in 0..n {
-        let jj = if reversed { j } else { n - 1 - j };
-        acc = acc * x + (jj as f64 * theta - delta).sin();
+/// p(x) = Σⱼ cⱼ xʲ by Horner (x ≤ 1), or its reversal xⁿ⁻¹p(1/x) (x = 1/s ≤ 1).
+fn poly(coeffs: &[f64], x: f64, reversed: bool) -> f64 {
+    if reversed {
+        coeffs.iter().fold(0.0, |acc, c| acc * x + c)
+    } else {
+        coeffs.iter().rev().fold(0.0, |acc, c| acc * x + c)
     }
-    acc
 }
 
 fn bisect(f: impl Fn(f64) -> f64, mut lo: f64, mut hi: f64) -> f64 {
@@ -128,16 +127,18 @@ fn bisect(f: impl Fn(f64) -> f64, mut lo: f64, mut hi: f64) -> f64 {
 /// polynomial, and found by bisection to full precision (no overflow: |s|, |u| ≤ 1 in Horner).
 #[must_use]
 pub fn solve_scale(theta: f64, delta: f64, degree: usize) -> f64 {
-    let n = degree;
-    let p1 = poly(theta, delta, n, 1.0, false);
+    let coeffs: Vec<f64> = (0..degree)
+        .map(|j| (j as f64 * theta - delta).sin())
+        .collect();
+    let p1 = poly(&coeffs, 1.0, false);
     if p1 == 0.0 {
         return 1.0;
     }
-    let p0 = poly(theta, delta, n, 0.0, false);
+    let p0 = poly(&coeffs, 0.0, false);
     if (p0 < 0.0) != (p1 < 0.0) {
-        bisect(|s| poly(theta, delta, n, s, false), 0.0, 1.0)
+        bisect(|s| poly(&coeffs, s, false), 0.0, 1.0)
     } else {
-        let u = bisect(|u| poly(theta, delta, n, u, true), 0.0, 1.0);
+        let u = bisect(|u| poly(&coeffs, u, true), 0.0, 1.0);
         1.0 / u
     }
 }

@@ -28,8 +28,8 @@ pub struct TypicalSpatial {
 }
 
 /// Rotation by θ about the unit axis u (right-handed, Rodrigues):
-/// R = I + sin θ [u]ₓ + (1 − cos θ)[u]ₓ², with [u]ₓ v = u × v. The printed eq. (12) is the
-/// transpose of [u]ₓ (it rotates by −θ); we use the usual convention and test v₁ = Rⁿ⁻¹v₀.
+/// R = I + sin θ K + (1 − cos θ)K², with K v = u × v (K the cross-product matrix of u). The printed eq. (12) is the
+/// transpose of K (it rotates by −θ); we use the usual convention and test v₁ = Rⁿ⁻¹v₀.
 #[must_use]
 pub fn rotation(axis: &Vector3<f64>, theta: f64) -> Matrix3<f64> {
     let k = axis.cross_matrix();
@@ -180,9 +180,10 @@ impl TypicalSpatial {
         }
     }
 
-    /// The paper's method: Nelder–Mead (argmin) on (φ, s) minimizing 1 − f(φ, s)·… i.e.
-    /// −f of eq. (15), f = unit(Σ) · unit(α₃ − α₀) − 1, from (φ, s) = (0, 1) with a 0.1 simplex.
-    /// Returns the curve and the final value of −f.
+    /// The paper's method: Nelder–Mead (argmin) on (φ, s) minimizing −f of eq. (15),
+    /// f = unit(Σ sʲRʲv₀) · unit(α₃ − α₀) − 1 ≤ 0, from (φ, s) = (0, 1) with a 0.1 simplex.
+    /// Returns the curve and the final value of −f. Since −f ≈ angle²/2 is computed as
+    /// 1 − cos, it cannot resolve chord angles below about 1.5e-8.
     ///
     /// # Errors
     /// As [`TypicalSpatial::from_points`], [`ClassAError::Optimizer`] if argmin fails.

@@ -1,7 +1,7 @@
 //! Seeded data sets and the figure cases shared by tests, benchmarks and the xtask.
 
 use bez_core::{BezierCurve, Vector2, Vector3};
-use nalgebra::Matrix3;
+use nalgebra::{Matrix2, Matrix3};
 use rand::{RngExt, SeedableRng};
 use rand_chacha::ChaCha8Rng;
 
@@ -245,4 +245,66 @@ pub fn endpoint_error<const D: usize>(
         (Some(first), Some(last)) => (curve.end() - last).norm() / (last - first).norm(),
         _ => f64::INFINITY,
     }
+}
+
+/// Outcome of [`farin_counterexample_search`].
+#[derive(Debug, Clone, PartialEq)]
+pub struct CounterexampleSearch {
+    /// Random matrices drawn.
+    pub matrices: usize,
+    /// Matrices meeting Farin's conditions (3) and (4).
+    pub meeting_3_and_4: usize,
+    /// Curves (from those matrices, degrees 3, 4, 5) with a certified interior curvature extremum.
+    pub not_monotone: usize,
+    /// Of those, how many also meet condition (4) for the sub-curve matrices (sampled).
+    pub not_monotone_with_subcurve_4: usize,
+    /// The first counterexample found: (M, Δb₀, degree, parameter of the extremum).
+    pub first: Option<(Matrix2<f64>, Vector2<f64>, usize, f64)>,
+}
+
+/// Random search for Cao & Wang's phenomenon: 2×2 matrices with entries a₁₁, a₂₂ ∈ [0.5, 3),
+/// a₁₂, a₂₁ ∈ [−2, 2) meeting Farin's (3) and (4), a random unit Δb₀, degrees 3..=5, and the
+/// curvature certificate of each curve. Seeded by `seed`.
+#[must_use]
+pub fn farin_counterexample_search(matrices: usize, seed: u64) -> CounterexampleSearch {
+    let mut rng = ChaCha8Rng::seed_from_u64(seed);
+    let mut out = CounterexampleSearch {
+        matrices,
+        meeting_3_and_4: 0,
+        not_monotone: 0,
+        not_monotone_with_subcurve_4: 0,
+        first: None,
+    };
+    for _ in 0..matrices {
+        let m = Matrix2::new(
+            rng.random_range(0.5..3.0),
+            rng.random_range(-2.0..2.0),
+            rng.random_range(-2.0..2.0),
+            rng.random_range(0.5..3.0),
+        );
+        let ang: f64 = rng.random_range(0.0..std::f64::consts::TAU);
+        let Ok(r) = crate::ClassAReport::of_2x2(&m) else {
+            continue;
+        };
+        if !(r.farin3.holds && r.farin4.holds) {
+            continue;
+        }
+        out.meeting_3_and_4 += 1;
+        let v = Vector2::new(ang.cos(), ang.sin());
+        for n in 3..=5 {
+            let Ok(c) = class_a_curve(&Vector2::zeros(), &v, &m, n) else {
+                continue;
+            };
+            if let Ok(cert) = crate::curvature_certificate(&c)
+                && let crate::Monotonicity::NotMonotone { extremum } = cert.verdict
+            {
+                out.not_monotone += 1;
+                out.not_monotone_with_subcurve_4 += usize::from(r.subcurve_farin4.holds);
+                if out.first.is_none() {
+                    out.first = Some((m, v, n, extremum));
+                }
+            }
+        }
+    }
+    out
 }

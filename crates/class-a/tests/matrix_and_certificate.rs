@@ -150,3 +150,20 @@ proptest! {
         }
     }
 }
+
+#[test]
+fn farin_conditions_do_not_imply_monotone_curvature() {
+    // Cao & Wang's point: a matrix meeting Farin's (3) and (4) whose curve has an interior
+    // curvature extremum. The certificate finds it; dense sampling confirms it.
+    let found = cases::farin_counterexample_search(3000, 1);
+    let (m, v, n, e) = found
+        .first
+        .expect("the seeded search finds a counterexample");
+    let r = ClassAReport::of_2x2(&m).unwrap();
+    assert!(r.farin3.holds && r.farin4.holds);
+    let c = class_a_curve(&Vector2::zeros(), &v, &m, n).unwrap();
+    let k = |t: f64| c.curvature(t).unwrap();
+    let h = (e.min(1.0 - e) / 2.0).min(1e-3);
+    let (a, b) = (k(e) - k(e - h), k(e + h) - k(e));
+    assert!(a * b < 0.0, "extremum at {e}: {a} {b}");
+}

@@ -151,3 +151,38 @@ fn control_points_into_matches_curve() {
         assert!((p - q).norm() < 1e-12);
     }
 }
+
+mod arbitrary_triangles {
+    use super::*;
+    use proptest::prelude::*;
+
+    proptest! {
+        #![proptest_config(ProptestConfig::with_cases(200))]
+        /// Any triangle: either a Class A curve interpolating α₀, α₂ and both tangent directions,
+        /// or a typed error agreeing with the feasibility test.
+        #[test]
+        fn any_triangle(x1 in 0.1f64..3.0, x2 in -3.0f64..3.0, y2 in 0.05f64..3.0, n in 2usize..30) {
+            let (a0, a1, a2) = (Vector2::new(0.0, 0.0), Vector2::new(x1, 0.0), Vector2::new(x2, y2));
+            let f = planar_feasibility(&a0, &a1, &a2, n);
+            match TypicalPlanar::from_points(&a0, &a1, &a2, n) {
+                Ok(c) => {
+                    prop_assert!(f.unwrap().is_feasible());
+                    prop_assert!(c.margin() >= 0.0);
+                    let curve = c.curve().unwrap();
+                    let p = curve.points();
+                    let scale = a2.norm();
+                    prop_assert!((curve.end() - a2).norm() <= 1e-9 * scale);
+                    prop_assert!(((p[1] - p[0]).normalize() - (a1 - a0).normalize()).norm() <= 1e-9);
+                    // The last leg L sⁿ⁻¹ can be far below the rounding of the points when s ≪ 1
+                    // (a tight turn near α₂): its direction is exact in the leg formula, and
+                    // recoverable from point differences only to ε|bₙ| / |Δbₙ₋₁|.
+                    let last_leg = c.length * c.s.powi(n as i32 - 1);
+                    let tol = 1e-9 + 8.0 * f64::EPSILON * p[n].norm() / last_leg;
+                    prop_assert!(((p[n] - p[n - 1]).normalize() - (a2 - a1).normalize()).norm() <= tol);
+                }
+                Err(ClassAError::NotClassA { .. }) => prop_assert!(!f.unwrap().is_feasible()),
+                Err(e) => prop_assert!(false, "unexpected {e}"),
+            }
+        }
+    }
+}

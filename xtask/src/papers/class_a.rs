@@ -22,7 +22,11 @@ const NM_ITERS: u64 = 2_000;
 
 /// The solver comparison and the figure cases' checks.
 pub(crate) fn tables() -> Result<Vec<Table>, DynError> {
-    Ok(vec![solver_table()?, figures_table()?])
+    Ok(vec![
+        solver_table()?,
+        figures_table()?,
+        counterexample_table()?,
+    ])
 }
 
 fn solver_table() -> Result<Table, DynError> {
@@ -129,6 +133,53 @@ fn solver_table() -> Result<Table, DynError> {
             "planar_ours": ours_p, "planar_nelder_mead": nm_p,
             "spatial_ours": ours_s, "spatial_nelder_mead": nm_s,
             "spatial_curvature_monotone": kappa_mono, "spatial_torsion_monotone": tau_mono,
+        }),
+    })
+}
+
+fn counterexample_table() -> Result<Table, DynError> {
+    let r = cases::farin_counterexample_search(200_000, 1);
+    let mut md = String::new();
+    writeln!(
+        md,
+        "Random 2×2 matrices (seed 1; a₁₁, a₂₂ ∈ [0.5, 3), a₁₂, a₂₁ ∈ [−2, 2)), each with a random unit Δb₀ and degrees 3, 4, 5."
+    )?;
+    writeln!(
+        md,
+        "Not in the paper: it shows that Farin's matrix conditions do not certify monotone curvature (Cao & Wang 2008)."
+    )?;
+    writeln!(md)?;
+    writeln!(
+        md,
+        "| matrices | meeting Farin (3) and (4) | curves with a certified interior curvature extremum | of those, meeting (4) for all sampled sub-curve matrices |"
+    )?;
+    writeln!(md, "|---|---|---|---|")?;
+    writeln!(
+        md,
+        "| {} | {} | {} | {} |",
+        r.matrices, r.meeting_3_and_4, r.not_monotone, r.not_monotone_with_subcurve_4
+    )?;
+    if let Some((m, v, n, e)) = r.first {
+        writeln!(md)?;
+        writeln!(
+            md,
+            "First counterexample: M = [[{:.6}, {:.6}], [{:.6}, {:.6}]], Δb₀ = ({:.6}, {:.6}), n = {n}, curvature extremum at t = {e:.6}.",
+            m[(0, 0)],
+            m[(0, 1)],
+            m[(1, 0)],
+            m[(1, 1)],
+            v.x,
+            v.y
+        )?;
+    }
+    Ok(Table {
+        name: "class-a-farin-counterexamples".into(),
+        markdown: md,
+        checked: json!({
+            "matrices": r.matrices,
+            "meeting_3_and_4": r.meeting_3_and_4,
+            "not_monotone": r.not_monotone,
+            "not_monotone_with_subcurve_4": r.not_monotone_with_subcurve_4,
         }),
     })
 }

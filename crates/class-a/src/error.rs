@@ -83,6 +83,15 @@ pub enum ClassAError {
         /// The best residual reached.
         residual: f64,
     },
+    /// No typical spatial curve reaches the chord direction α₃ − α₀ (searched over the whole
+    /// (φ, s) grid and refined by Newton).
+    #[error(
+        "no typical spatial curve of this degree reaches the chord direction: smallest direction error {residual}"
+    )]
+    ChordUnreachable {
+        /// The smallest |unit(Σ) − unit(chord)| found.
+        residual: f64,
+    },
     /// An optimizer from argmin failed.
     #[error("optimizer failed: {message}")]
     Optimizer {

@@ -145,7 +145,8 @@ impl TypicalSpatial {
     ///
     /// # Errors
     /// [`ClassAError::DegreeTooLow`], [`ClassAError::NonFinite`], [`ClassAError::CoincidentPoints`],
-    /// [`ClassAError::ParallelTangents`], [`ClassAError::NoConvergence`] (residual > 1e-12).
+    /// [`ClassAError::ParallelTangents`], [`ClassAError::ChordUnreachable`] (no start converged to a
+    /// residual ≤ 1e-12; e.g. a chord pointing back against both tangents).
     pub fn from_points(a: &[Vector3<f64>; 4], degree: usize) -> Result<Self, ClassAError> {
         let setup = Setup::new(a, degree)?;
         let (np, ns) = (41, 33);
@@ -173,10 +174,7 @@ impl TypicalSpatial {
         }
         match best {
             Some((_, _, phi, ls)) => setup.finish(&a[0], phi, ls.exp()),
-            None => Err(ClassAError::NoConvergence {
-                method: "grid + Newton",
-                residual: best_res,
-            }),
+            None => Err(ClassAError::ChordUnreachable { residual: best_res }),
         }
     }
 

@@ -201,3 +201,17 @@ fn figure_cases_build() {
     let (_, c9) = cases::fig9_general().unwrap();
     assert!(torsion_certificate(&c9).is_ok());
 }
+
+#[test]
+fn unreachable_chord_is_reported() {
+    let z = Vector3::zeros();
+    let a = [
+        z,
+        Vector3::x(),
+        Vector3::new(-5.0, 1.0, 0.0),
+        Vector3::new(-10.0, 0.0, 0.0),
+    ];
+    let e = TypicalSpatial::from_points(&a, 5).unwrap_err();
+    assert!(matches!(e, ClassAError::ChordUnreachable { residual } if residual > 0.1));
+    assert!(e.to_string().contains("chord direction"));
+}

@@ -34,6 +34,7 @@ pub enum Monotonicity {
 /// A monotonicity certificate: the Bernstein coefficients of the numerator N(t) of the
 /// derivative (the denominator is positive), and the verdict.
 #[derive(Debug, Clone, PartialEq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 pub struct Certificate {
     /// The verdict.
     pub verdict: Monotonicity,

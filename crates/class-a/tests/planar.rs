@@ -5,7 +5,7 @@ use class_a::*;
 
 #[allow(
     clippy::unwrap_used,
-    reason = "test helper: a failure is a test failure"
+    reason = "shared test check: a failure is a test failure"
 )]
 fn check_interpolation(a: &[Vector2<f64>; 3], c: &TypicalPlanar, tol: f64) {
     let curve = c.curve().unwrap();

@@ -15,7 +15,7 @@ fn rotation_maps_v0_to_v1() {
 
 #[allow(
     clippy::unwrap_used,
-    reason = "test helper: a failure is a test failure"
+    reason = "shared test check: a failure is a test failure"
 )]
 fn check(a: &[Vector3<f64>; 4], c: &TypicalSpatial) {
     let curve = c.curve().unwrap();

@@ -55,4 +55,4 @@ pub use crate::planar::{
     solve_scale,
 };
 pub use crate::spatial::{TypicalSpatial, rotation};
-pub use crate::spiral::{log_spiral_pole, printed_pole_eq19, spiral_deviation};
+pub use crate::spiral::{apollonius_pole, log_spiral_pole, printed_pole_eq19, spiral_deviation};

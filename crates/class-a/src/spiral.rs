@@ -61,3 +61,46 @@ pub fn spiral_deviation(points: &[Vector2<f64>], pole: &Vector2<f64>, s: f64, th
         })
         .fold(0.0, f64::max)
 }
+
+/// The pole by the paper's geometric construction (Fig. 4): with s = |b₂ − b₁| / |b₁ − b₀|, the
+/// Apollonius circles Cᵢ = {q : |bᵢ₊₁ − q| = s |bᵢ − q|}, i = 0, 1, 2, all pass through the pole,
+/// which is therefore their radical center: the intersection of the radical axes l₀ (of C₀, C₁)
+/// and l₁ (of C₁, C₂). Needs four consecutive control points b₀..b₃.
+///
+/// Cᵢ normalized: |q|² − 2q·cᵢ + kᵢ = 0 with cᵢ = (bᵢ₊₁ − s²bᵢ)/(1 − s²) and
+/// kᵢ = (|bᵢ₊₁|² − s²|bᵢ|²)/(1 − s²); lᵢ: 2q·(cᵢ₊₁ − cᵢ) = kᵢ₊₁ − kᵢ.
+///
+/// # Errors
+/// [`ClassAError::NoPole`] when s = 1 (the circles degenerate to lines) or the radical axes are
+/// parallel; [`ClassAError::NonFinite`] for non-finite points.
+pub fn apollonius_pole(b: &[Vector2<f64>; 4]) -> Result<Vector2<f64>, ClassAError> {
+    if !b.iter().all(|p| p.x.is_finite() && p.y.is_finite()) {
+        return Err(ClassAError::NonFinite {
+            name: "control points",
+        });
+    }
+    let l0 = (b[1] - b[0]).norm();
+    let s = (b[2] - b[1]).norm() / l0;
+    let s2 = s * s;
+    if !s.is_finite() || (1.0 - s2).abs() < 1e-12 {
+        return Err(ClassAError::NoPole { s, theta: f64::NAN });
+    }
+    let circle = |i: usize| {
+        let c = (b[i + 1] - b[i] * s2) / (1.0 - s2);
+        let k = (b[i + 1].norm_squared() - s2 * b[i].norm_squared()) / (1.0 - s2);
+        (c, k)
+    };
+    let (c0, k0) = circle(0);
+    let (c1, k1) = circle(1);
+    let (c2, k2) = circle(2);
+    let (n0, r0) = ((c1 - c0) * 2.0, k1 - k0);
+    let (n1, r1) = ((c2 - c1) * 2.0, k2 - k1);
+    let det = n0.x * n1.y - n0.y * n1.x;
+    if det == 0.0 || !det.is_finite() {
+        return Err(ClassAError::NoPole { s, theta: f64::NAN });
+    }
+    Ok(Vector2::new(
+        (r0 * n1.y - r1 * n0.y) / det,
+        (n0.x * r1 - n1.x * r0) / det,
+    ))
+}

@@ -215,3 +215,39 @@ fn unreachable_chord_is_reported() {
     assert!(matches!(e, ClassAError::ChordUnreachable { residual } if residual > 0.1));
     assert!(e.to_string().contains("chord direction"));
 }
+
+#[test]
+fn apollonius_construction_agrees_with_closed_form_pole() {
+    for (a, n) in cases::random_planar_inputs(100, 9) {
+        let c = TypicalPlanar::from_points(&a[0], &a[1], &a[2], n).unwrap();
+        if (c.s - 1.0).abs() < 1e-3 {
+            continue;
+        }
+        let p = c.curve().unwrap().into_points();
+        let rho = log_spiral_pole(&c.b0, &(c.mu * c.length), c.s, c.theta).unwrap();
+        let geo = apollonius_pole(&[p[0], p[1], p[2], p[3]]).unwrap();
+        let scale = (p[1] - p[0]).norm() / (1.0 - c.s).abs().max(1e-3);
+        assert!(
+            (geo - rho).norm() <= 1e-8 * scale,
+            "{} vs scale {scale}",
+            (geo - rho).norm()
+        );
+    }
+    // s = 1: the circles are lines.
+    let sq = [
+        Vector2::new(0.0, 0.0),
+        Vector2::new(1.0, 0.0),
+        Vector2::new(1.0, 1.0),
+        Vector2::new(0.0, 1.0),
+    ];
+    assert!(matches!(
+        apollonius_pole(&sq),
+        Err(ClassAError::NoPole { .. })
+    ));
+    let mut bad = sq;
+    bad[3].x = f64::INFINITY;
+    assert!(matches!(
+        apollonius_pole(&bad),
+        Err(ClassAError::NonFinite { .. })
+    ));
+}

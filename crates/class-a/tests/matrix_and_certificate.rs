@@ -167,3 +167,35 @@ fn farin_conditions_do_not_imply_monotone_curvature() {
     let (a, b) = (k(e) - k(e - h), k(e + h) - k(e));
     assert!(a * b < 0.0, "extremum at {e}: {a} {b}");
 }
+
+mod certificate_vs_sampling {
+    use super::*;
+    use bez_core::proptest_support;
+
+    proptest! {
+        #![proptest_config(ProptestConfig::with_cases(64))]
+        /// A "monotone" verdict is never contradicted by dense sampling, and a reported extremum is
+        /// a local extremum (regular curves only).
+        #[test]
+        fn monotone_verdict_holds_on_samples(c in proptest_support::curve::<2>(2..=6, 10.0)) {
+            let speed_ok = (0..=400).all(|i| c.derivative().eval(i as f64 / 400.0).map(|d| d.norm() > 1e-3).unwrap_or(false));
+            prop_assume!(speed_ok);
+            let cert = curvature_certificate(&c).unwrap();
+            let ks: Vec<f64> = (0..=400).map(|i| c.curvature(i as f64 / 400.0).unwrap()).collect();
+            let scale = ks.iter().fold(0.0f64, |m, k| m.max(*k));
+            let tol = 1e-9 * scale;
+            match cert.verdict {
+                Monotonicity::Increasing => prop_assert!(ks.windows(2).all(|w| w[1] >= w[0] - tol)),
+                Monotonicity::Decreasing => prop_assert!(ks.windows(2).all(|w| w[1] <= w[0] + tol)),
+                Monotonicity::Constant => prop_assert!(ks.windows(2).all(|w| (w[1] - w[0]).abs() <= tol)),
+                Monotonicity::NotMonotone { extremum: e } => {
+                    prop_assert!(e > 0.0 && e < 1.0);
+                    // A local extremum of κ: the one-sided differences do not share a sign.
+                    let h = (e.min(1.0 - e) / 2.0).min(1e-4);
+                    let k = |t: f64| c.curvature(t).unwrap();
+                    prop_assert!((k(e) - k(e - h)) * (k(e + h) - k(e)) <= tol * tol);
+                }
+            }
+        }
+    }
+}

@@ -43,7 +43,8 @@ pub struct ClassAReport {
     /// Farin (4): margin = σ_min² − σ_max.
     pub farin4: Condition,
     /// Farin (4) for the sub-curve matrices (1−t)I + tM: margin = min over t of σ_min² − σ_max,
-    /// evaluated at t = k/[`SUBCURVE_SAMPLES`], k = 1..=SUBCURVE_SAMPLES (sampled, not proven).
+    /// evaluated at t = k/[`SUBCURVE_SAMPLES`], k = 1..=SUBCURVE_SAMPLES, then refined by golden
+    /// section around the smallest sample (a numerical minimum, not a proof).
     /// Condition (3) for these matrices is t·(M + Mᵀ − 2I) ⪰ 0, the same as for M.
     pub subcurve_farin4: Condition,
 }
@@ -114,10 +115,35 @@ fn report<M>(
     sub: impl Fn(f64) -> M,
 ) -> ClassAReport {
     let (smin, smax) = sv(m);
-    let mut sub_margin = f64::INFINITY;
+    let margin_at = |t: f64| {
+        let (a, b) = sv(&sub(t));
+        a * a - b
+    };
+    let h = 1.0 / SUBCURVE_SAMPLES as f64;
+    let (mut k_best, mut sub_margin) = (1, f64::INFINITY);
     for k in 1..=SUBCURVE_SAMPLES {
-        let (a, b) = sv(&sub(k as f64 / SUBCURVE_SAMPLES as f64));
-        sub_margin = sub_margin.min(a * a - b);
+        let v = margin_at(k as f64 * h);
+        if v < sub_margin {
+            (k_best, sub_margin) = (k, v);
+        }
+    }
+    // Golden-section refinement between the neighbours of the best sample.
+    let (mut lo, mut hi) = (
+        (k_best as f64 - 1.0) * h,
+        ((k_best as f64 + 1.0) * h).min(1.0),
+    );
+    let g = 0.5 * (5.0_f64.sqrt() - 1.0);
+    for _ in 0..60 {
+        let (x1, x2) = (hi - g * (hi - lo), lo + g * (hi - lo));
+        if margin_at(x1) < margin_at(x2) {
+            hi = x2;
+        } else {
+            lo = x1;
+        }
+    }
+    let t = 0.5 * (lo + hi);
+    if t > 0.0 {
+        sub_margin = sub_margin.min(margin_at(t));
     }
     ClassAReport {
         farin3: Condition::new(sym_min(m)),

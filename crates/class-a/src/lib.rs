@@ -1,8 +1,58 @@
 //! # class-a
 //!
-//! Zhang G, Yang L. *Interactive generation of Class A Bézier curves.* 2014
-//! (after Farin 2006 and Yoshida & Saito).
+//! Zhang Zhiyi, Yang Xi. *Interactively controlled generation method for Class A Bézier curve*
+//! (A 级贝塞尔曲线的交互式控制生成方法). Computer Applications and Software 31(2), 2014,
+//! doi:10.3969/j.issn.1000-386x.2014.02.028; after G. Farin, *Class A Bézier curves*, CAGD 23
+//! (2006) 573–581, and N. Yoshida, T. Saito, *Interactive control of planar Class A Bézier curves
+//! using logarithmic curvature graphs*, CAD&A 5 (2008).
 //!
-//! Class A Bézier curves, whose control polygon legs are Δbⱼ = Mʲ Δb₀ for a Class A matrix M,
-//! generated interactively from a few points; their log spirals and logarithmic curvature and
-//! torsion graphs.
+//! Class A Bézier curves have control polygon legs Δbⱼ = Mʲ Δb₀ for a Class A matrix M. This
+//! crate reports each of Farin's matrix conditions separately, certifies monotone curvature and
+//! torsion from the curve itself (Bernstein form of the derivative's numerator), generates
+//! typical planar curves from three points with a bracketed root solve (the paper uses
+//! Nelder–Mead, kept for comparison), typical spatial curves from four points, the log-spiral
+//! pole of the control points, and logarithmic curvature/torsion graphs.
+//!
+//! ```
+//! use bez_core::Vector2;
+//! use class_a::TypicalPlanar;
+//! let (a0, a1, a2) = (Vector2::new(0.0, 0.0), Vector2::new(1.0, 0.0), Vector2::new(1.6, 1.0));
+//! let c = TypicalPlanar::from_points(&a0, &a1, &a2, 7)?;
+//! let curve = c.curve()?;
+//! assert!((curve.end() - a2).norm() < 1e-12);
+//! assert!(c.margin() >= 0.0); // exact monotone curvature, condition (4)
+//! # Ok::<(), class_a::ClassAError>(())
+//! ```
+
+mod certificate;
+mod curve;
+mod error;
+mod general;
+mod lcg;
+mod matrix;
+mod planar;
+mod spatial;
+mod spiral;
+
+pub mod cases;
+
+pub use crate::certificate::{
+    Certificate, MAX_CURVATURE_DEGREE, MAX_TORSION_DEGREE, Monotonicity, ROUNDING_ALLOWANCE,
+    curvature_certificate, torsion_certificate,
+};
+pub use crate::curve::class_a_curve;
+pub use crate::error::ClassAError;
+pub use crate::general::{perturb2, perturb3};
+pub use crate::lcg::{
+    LogGraph, curvature_samples, curvature_with_derivative, log_graph, log_graph_from_points,
+    torsion_samples, torsion_with_derivative,
+};
+pub use crate::matrix::{
+    ClassAReport, Condition, SUBCURVE_SAMPLES, typical_matrix2, typical_planar_margin,
+};
+pub use crate::planar::{
+    PlanarFeasibility, PlanarGeometry, TypicalPlanar, planar_feasibility, planar_nelder_mead,
+    solve_scale,
+};
+pub use crate::spatial::{TypicalSpatial, rotation};
+pub use crate::spiral::{apollonius_pole, log_spiral_pole, printed_pole_eq19, spiral_deviation};

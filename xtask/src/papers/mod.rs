@@ -8,6 +8,7 @@ use std::path::{Path, PathBuf};
 mod bez_core;
 mod lambda_bezier;
 mod pde_bezier;
+mod class_a;
 
 use crate::DynError;
 use crate::tables::Table;
@@ -42,6 +43,11 @@ const PAPERS: &[Paper] = &[
         name: "pde-bezier",
         tables: Some(pde_bezier::tables),
         figures: Some(pde_bezier::figures),
+    },
+    Paper {
+        name: "class-a",
+        tables: Some(class_a::tables),
+        figures: Some(class_a::figures),
     },
 ];
 

@@ -1,0 +1,49 @@
+//! class-a: interactive planar and spatial updates (points in, control points out).
+#![allow(missing_docs, reason = "criterion macros generate undocumented items")]
+
+use std::hint::black_box;
+
+use class_a::{TypicalPlanar, TypicalSpatial, cases, planar_nelder_mead};
+use criterion::{BenchmarkId, Criterion, criterion_group, criterion_main};
+
+fn planar(c: &mut Criterion) {
+    let a = cases::fig6_points();
+    let mut g = c.benchmark_group("class_a_planar_update");
+    for n in [7, 49] {
+        g.bench_with_input(BenchmarkId::from_parameter(n), &n, |b, &n| {
+            let mut out = Vec::with_capacity(n + 1);
+            b.iter(|| {
+                if let Ok(t) = TypicalPlanar::from_points(black_box(&a[0]), &a[1], &a[2], n) {
+                    t.control_points_into(&mut out);
+                }
+            });
+        });
+    }
+    g.finish();
+    let mut g = c.benchmark_group("class_a_planar_nelder_mead");
+    for n in [7, 49] {
+        g.bench_with_input(BenchmarkId::from_parameter(n), &n, |b, &n| {
+            b.iter(|| planar_nelder_mead(black_box(&a[0]), &a[1], &a[2], n, 2000));
+        });
+    }
+    g.finish();
+}
+
+fn spatial(c: &mut Criterion) {
+    let a = cases::fig8_points();
+    let mut g = c.benchmark_group("class_a_spatial_update");
+    for n in [4, 7, 20] {
+        g.bench_with_input(BenchmarkId::from_parameter(n), &n, |b, &n| {
+            b.iter(|| TypicalSpatial::from_points(black_box(&a), n).and_then(|t| t.curve()));
+        });
+    }
+    g.finish();
+    let mut g = c.benchmark_group("class_a_spatial_nelder_mead");
+    g.bench_with_input(BenchmarkId::from_parameter(7), &7, |b, &n| {
+        b.iter(|| TypicalSpatial::nelder_mead(black_box(&a), n, 2000));
+    });
+    g.finish();
+}
+
+criterion_group!(benches, planar, spatial);
+criterion_main!(benches);

@@ -1,0 +1,115 @@
+//! The error type of class-a.
+
+/// Everything that can go wrong when building or analysing Class A curves.
+#[derive(Debug, Clone, PartialEq, thiserror::Error)]
+#[non_exhaustive]
+pub enum ClassAError {
+    /// An error of the Bézier kernel.
+    #[error(transparent)]
+    Core(#[from] bez_core::CoreError),
+    /// An input number (point coordinate, matrix entry, scale, angle) is NaN or infinite.
+    #[error("input {name} is not finite")]
+    NonFinite {
+        /// Which input.
+        name: &'static str,
+    },
+    /// The degree is too low for the construction.
+    #[error("degree {degree} is too low: at least {needed} is needed")]
+    DegreeTooLow {
+        /// The degree given.
+        degree: usize,
+        /// The smallest degree accepted.
+        needed: usize,
+    },
+    /// The degree is too high for an exact Bernstein certificate (binomials beyond 120).
+    #[error("degree {degree} is too high for the Bernstein certificate (at most {max})")]
+    DegreeTooHigh {
+        /// The degree given.
+        degree: usize,
+        /// The largest degree accepted.
+        max: usize,
+    },
+    /// Two interactive control points coincide, so a tangent direction is undefined.
+    #[error("interactive points {first} and {second} coincide")]
+    CoincidentPoints {
+        /// Index of the first point.
+        first: usize,
+        /// Index of the second point.
+        second: usize,
+    },
+    /// The end tangents do not turn (collinear points) or turn by π: no unique curve.
+    #[error("the end tangents turn by {turn} rad: a typical curve needs 0 < |turn| < π")]
+    DegenerateTurn {
+        /// The signed turn ψ of the tangent, in radians.
+        turn: f64,
+    },
+    /// The chord α₂ − α₀ does not lie strictly between the two end tangents (impossible for a
+    /// non-degenerate triangle, where δ = ψ − angle at α₂; guards rounding at near-collinear input).
+    #[error(
+        "the chord direction {chord_angle} rad is not strictly between 0 and the tangent turn {turn} rad"
+    )]
+    ChordOutsideTangents {
+        /// Angle δ of the chord measured from the start tangent.
+        chord_angle: f64,
+        /// The signed turn ψ of the tangent.
+        turn: f64,
+    },
+    /// The solved typical matrix s·R(θ) violates condition (4): cos θ < s < 1/cos θ.
+    #[error(
+        "no Class A curve: the solved scale s = {s} lies in the forbidden band ({lower}, {upper}) for θ = {theta} (an isosceles triangle gives s = 1)"
+    )]
+    NotClassA {
+        /// The solved scale.
+        s: f64,
+        /// The rotation angle per leg.
+        theta: f64,
+        /// cos θ.
+        lower: f64,
+        /// 1 / cos θ.
+        upper: f64,
+    },
+    /// The two end tangents of a spatial curve are parallel or opposite: the rotation axis of
+    /// eq. (14) is undefined.
+    #[error("the spatial end tangents are parallel or opposite (cos angle = {cos_angle})")]
+    ParallelTangents {
+        /// Cosine of the angle between the tangents.
+        cos_angle: f64,
+    },
+    /// The solver found no parameters meeting the end conditions.
+    #[error("{method} did not converge: residual {residual}")]
+    NoConvergence {
+        /// The solver.
+        method: &'static str,
+        /// The best residual reached.
+        residual: f64,
+    },
+    /// No typical spatial curve reaches the chord direction α₃ − α₀ (searched over the whole
+    /// (φ, s) grid and refined by Newton).
+    #[error(
+        "no typical spatial curve of this degree reaches the chord direction: smallest direction error {residual}"
+    )]
+    ChordUnreachable {
+        /// The smallest |unit(Σ) − unit(chord)| found.
+        residual: f64,
+    },
+    /// An optimizer from argmin failed.
+    #[error("optimizer failed: {message}")]
+    Optimizer {
+        /// The optimizer's message.
+        message: String,
+    },
+    /// The spiral similarity is the identity (s e^{iθ} = 1): no pole.
+    #[error("no log-spiral pole: s = {s}, θ = {theta} give the identity similarity")]
+    NoPole {
+        /// The scale.
+        s: f64,
+        /// The angle.
+        theta: f64,
+    },
+    /// Too few usable samples for a logarithmic graph (κ or dκ/ds vanish or are not finite).
+    #[error("only {count} usable samples for the logarithmic graph, need at least 2")]
+    TooFewSamples {
+        /// The usable samples.
+        count: usize,
+    },
+}

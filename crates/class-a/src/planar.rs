@@ -1,0 +1,427 @@
+//! Interactive typical planar Class A curves from three points (eqs. (5)–(8)).
+
+use bez_core::{BezierCurve, Vector2};
+use nalgebra::{Complex, Matrix2};
+
+use crate::matrix::{typical_matrix2, typical_planar_margin};
+use crate::{ClassAError, class_a_curve};
+
+/// A typical planar Class A curve: b₀, first leg L·μ, and M = s·R(θ) (eq. (5)).
+#[derive(Debug, Clone, Copy, PartialEq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
+pub struct TypicalPlanar {
+    /// First control point b₀ = α₀.
+    pub b0: Vector2<f64>,
+    /// Unit start tangent μ.
+    pub mu: Vector2<f64>,
+    /// Length L = |Δb₀| (the paper's second meaning of "b₀").
+    pub length: f64,
+    /// Scale s of M.
+    pub s: f64,
+    /// Rotation angle θ per leg (signed).
+    pub theta: f64,
+    /// Degree n.
+    pub degree: usize,
+}
+
+/// Signed angle from a to b in (−π, π].
+pub(crate) fn signed_angle(a: &Vector2<f64>, b: &Vector2<f64>) -> f64 {
+    (a.x * b.y - a.y * b.x).atan2(a.dot(b))
+}
+
+/// The geometry of three interactive points: ψ (tangent turn), δ (chord angle), |chord|.
+#[derive(Debug, Clone, Copy, PartialEq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
+pub struct PlanarGeometry {
+    /// Unit start tangent μ = (α₁ − α₀)/|α₁ − α₀|.
+    pub mu: Vector2<f64>,
+    /// Signed turn ψ from α₁ − α₀ to α₂ − α₁.
+    pub turn: f64,
+    /// Signed angle δ of α₂ − α₀ measured from α₁ − α₀.
+    pub chord_angle: f64,
+    /// |α₂ − α₀|.
+    pub chord_length: f64,
+}
+
+impl PlanarGeometry {
+    /// Validates the three points.
+    ///
+    /// # Errors
+    /// [`ClassAError::NonFinite`], [`ClassAError::CoincidentPoints`],
+    /// [`ClassAError::DegenerateTurn`] (collinear, or a turn of π),
+    /// [`ClassAError::ChordOutsideTangents`] (δ not strictly between 0 and ψ).
+    pub fn new(
+        a0: &Vector2<f64>,
+        a1: &Vector2<f64>,
+        a2: &Vector2<f64>,
+    ) -> Result<Self, ClassAError> {
+        for (p, name) in [(a0, "alpha0"), (a1, "alpha1"), (a2, "alpha2")] {
+            if !(p.x.is_finite() && p.y.is_finite()) {
+                return Err(ClassAError::NonFinite { name });
+            }
+        }
+        let (t0, t1, c) = (a1 - a0, a2 - a1, a2 - a0);
+        for (v, first, second) in [(&t0, 0, 1), (&t1, 1, 2), (&c, 0, 2)] {
+            if v.norm() == 0.0 {
+                return Err(ClassAError::CoincidentPoints { first, second });
+            }
+        }
+        let turn = signed_angle(&t0, &t1);
+        if turn == 0.0 || turn.abs() >= std::f64::consts::PI {
+            return Err(ClassAError::DegenerateTurn { turn });
+        }
+        let chord_angle = signed_angle(&t0, &c);
+        let inside = if turn > 0.0 {
+            chord_angle > 0.0 && chord_angle < turn
+        } else {
+            chord_angle < 0.0 && chord_angle > turn
+        };
+        if !inside {
+            return Err(ClassAError::ChordOutsideTangents { chord_angle, turn });
+        }
+        Ok(Self {
+            mu: t0 / t0.norm(),
+            turn,
+            chord_angle,
+            chord_length: c.norm(),
+        })
+    }
+}
+
+/// p(x) = Σⱼ cⱼ xʲ by Horner (x ≤ 1), or its reversal xⁿ⁻¹p(1/x) (x = 1/s ≤ 1).
+fn poly(coeffs: &[f64], x: f64, reversed: bool) -> f64 {
+    if reversed {
+        coeffs.iter().fold(0.0, |acc, c| acc * x + c)
+    } else {
+        coeffs.iter().rev().fold(0.0, |acc, c| acc * x + c)
+    }
+}
+
+fn bisect(f: impl Fn(f64) -> f64, mut lo: f64, mut hi: f64) -> f64 {
+    let mut flo = f(lo);
+    for _ in 0..200 {
+        let mid = 0.5 * (lo + hi);
+        if mid <= lo || mid >= hi {
+            break;
+        }
+        let fm = f(mid);
+        if fm == 0.0 {
+            return mid;
+        }
+        if (fm < 0.0) == (flo < 0.0) {
+            lo = mid;
+            flo = fm;
+        } else {
+            hi = mid;
+        }
+    }
+    0.5 * (lo + hi)
+}
+
+/// The unique positive root s of Σ_{j=0}^{n−1} sin(jθ − δ) sʲ = 0 (NOTES; from eq. (6) by
+/// dividing by L μ e^{iδ} and taking the imaginary part).
+///
+/// The coefficients sin(jθ − δ) change sign exactly once (jθ − δ runs monotonically from −δ to
+/// ψ − δ, an interval of length |ψ| < π containing 0), so by Descartes' rule there is exactly one
+/// positive root. It is bracketed in (0, 1] by p, or in (0, 1) in u = 1/s by the reversed
+/// polynomial, and found by bisection to full precision (no overflow: |s|, |u| ≤ 1 in Horner).
+#[must_use]
+pub fn solve_scale(theta: f64, delta: f64, degree: usize) -> f64 {
+    let coeffs: Vec<f64> = (0..degree)
+        .map(|j| (j as f64 * theta - delta).sin())
+        .collect();
+    let p1 = poly(&coeffs, 1.0, false);
+    if p1 == 0.0 {
+        return 1.0;
+    }
+    let p0 = poly(&coeffs, 0.0, false);
+    if (p0 < 0.0) != (p1 < 0.0) {
+        bisect(|s| poly(&coeffs, s, false), 0.0, 1.0)
+    } else {
+        let u = bisect(|u| poly(&coeffs, u, true), 0.0, 1.0);
+        1.0 / u
+    }
+}
+
+/// Whether three points admit a typical Class A curve of degree n, and by which margin.
+#[derive(Debug, Clone, Copy, PartialEq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
+pub struct PlanarFeasibility {
+    /// The scale s solved from the points.
+    pub s: f64,
+    /// θ = ψ/(n − 1).
+    pub theta: f64,
+    /// Margin of condition (4), [`typical_planar_margin`]: ≥ 0 iff feasible.
+    pub margin: f64,
+    /// The chord angles δ (from the start tangent) that are forbidden for this turn ψ and
+    /// degree: the open interval between the chord angles given by s = cos θ and s = 1/cos θ.
+    /// An interactive tool can shade this wedge at α₀.
+    pub forbidden_chord_angles: (f64, f64),
+}
+
+impl PlanarFeasibility {
+    /// The points admit a Class A curve.
+    #[must_use]
+    pub fn is_feasible(&self) -> bool {
+        self.margin >= 0.0
+    }
+}
+
+/// arg Σ_{j<n} (s e^{iθ})ʲ: the chord angle δ produced by a given s.
+fn chord_angle_of(s: f64, theta: f64, n: usize) -> f64 {
+    let z = Complex::from_polar(s, theta);
+    let mut sum = Complex::new(0.0, 0.0);
+    let mut p = Complex::new(1.0, 0.0);
+    for _ in 0..n {
+        sum += p;
+        p *= z;
+    }
+    sum.im.atan2(sum.re)
+}
+
+/// Feasibility of the points α₀, α₁, α₂ for degree n, computed in advance (no curve built).
+///
+/// # Errors
+/// As [`PlanarGeometry::new`], and [`ClassAError::DegreeTooLow`] for n < 2.
+pub fn planar_feasibility(
+    a0: &Vector2<f64>,
+    a1: &Vector2<f64>,
+    a2: &Vector2<f64>,
+    degree: usize,
+) -> Result<PlanarFeasibility, ClassAError> {
+    if degree < 2 {
+        return Err(ClassAError::DegreeTooLow { degree, needed: 2 });
+    }
+    let g = PlanarGeometry::new(a0, a1, a2)?;
+    let theta = g.turn / (degree - 1) as f64;
+    let s = solve_scale(theta, g.chord_angle, degree);
+    let c = theta.cos();
+    let forbidden = if c > 0.0 {
+        let (x, y) = (
+            chord_angle_of(c, theta, degree),
+            chord_angle_of(1.0 / c, theta, degree),
+        );
+        (x.min(y), x.max(y))
+    } else {
+        (g.turn.min(0.0), g.turn.max(0.0))
+    };
+    Ok(PlanarFeasibility {
+        s,
+        theta,
+        margin: typical_planar_margin(s, theta),
+        forbidden_chord_angles: forbidden,
+    })
+}
+
+impl TypicalPlanar {
+    /// Solves the typical planar Class A curve of degree n through α₀ and α₂ with end tangents
+    /// along α₁ − α₀ and α₂ − α₁ (eqs. (5)–(8)): θ = ψ/(n − 1), s from [`solve_scale`],
+    /// L = |α₂ − α₀| / |Σ zʲ| with z = s e^{iθ}.
+    ///
+    /// # Errors
+    /// As [`planar_feasibility`], and [`ClassAError::NotClassA`] when s violates condition (4)
+    /// (cos θ < s < 1/cos θ; an isosceles triangle gives s = 1).
+    pub fn from_points(
+        a0: &Vector2<f64>,
+        a1: &Vector2<f64>,
+        a2: &Vector2<f64>,
+        degree: usize,
+    ) -> Result<Self, ClassAError> {
+        let f = planar_feasibility(a0, a1, a2, degree)?;
+        if !f.is_feasible() {
+            let c = f.theta.cos();
+            return Err(ClassAError::NotClassA {
+                s: f.s,
+                theta: f.theta,
+                lower: c,
+                upper: 1.0 / c,
+            });
+        }
+        Self::from_points_unchecked(a0, a1, a2, degree, f.s, f.theta)
+    }
+
+    fn from_points_unchecked(
+        a0: &Vector2<f64>,
+        a1: &Vector2<f64>,
+        a2: &Vector2<f64>,
+        degree: usize,
+        s: f64,
+        theta: f64,
+    ) -> Result<Self, ClassAError> {
+        let g = PlanarGeometry::new(a0, a1, a2)?;
+        let sum = geometric_sum(s, theta, degree);
+        let length = g.chord_length / sum.norm();
+        if !length.is_finite() || length <= 0.0 {
+            return Err(ClassAError::NonFinite { name: "length" });
+        }
+        Ok(Self {
+            b0: *a0,
+            mu: g.mu,
+            length,
+            s,
+            theta,
+            degree,
+        })
+    }
+
+    /// M = s·R(θ).
+    #[must_use]
+    pub fn matrix(&self) -> Matrix2<f64> {
+        typical_matrix2(self.s, self.theta)
+    }
+
+    /// The Bézier curve (eq. (8)).
+    ///
+    /// # Errors
+    /// [`ClassAError::Core`] if the control points overflow.
+    pub fn curve(&self) -> Result<BezierCurve<2>, ClassAError> {
+        class_a_curve(
+            &self.b0,
+            &(self.mu * self.length),
+            &self.matrix(),
+            self.degree,
+        )
+    }
+
+    /// Control points written in place (no allocation beyond `out`), for interactive updates.
+    pub fn control_points_into(&self, out: &mut Vec<Vector2<f64>>) {
+        out.clear();
+        let (sn, c) = self.theta.sin_cos();
+        let (zr, zi) = (self.s * c, self.s * sn);
+        let mut p = self.b0;
+        let mut leg = self.mu * self.length;
+        out.push(p);
+        for _ in 0..self.degree {
+            p += leg;
+            out.push(p);
+            leg = Vector2::new(zr * leg.x - zi * leg.y, zi * leg.x + zr * leg.y);
+        }
+    }
+
+    /// Margin of condition (4) (≥ 0: monotone curvature, exactly).
+    #[must_use]
+    pub fn margin(&self) -> f64 {
+        typical_planar_margin(self.s, self.theta)
+    }
+
+    /// w(t) = 1 + t(s e^{iθ} − 1): x'(t) = nLμ w(t)ⁿ⁻¹ in complex notation.
+    fn w(&self, t: f64) -> Complex<f64> {
+        let z = Complex::from_polar(self.s, self.theta);
+        Complex::new(1.0, 0.0) + (z - 1.0) * t
+    }
+
+    /// Signed curvature in closed form: κ(t) = (n − 1) s sin θ / (n L |w(t)|ⁿ⁺¹), accurate at
+    /// high degree where differences of control points are not (NOTES).
+    #[must_use]
+    pub fn curvature(&self, t: f64) -> f64 {
+        let n = self.degree as f64;
+        (n - 1.0) * self.s * self.theta.sin() / (n * self.length * self.w(t).norm().powf(n + 1.0))
+    }
+
+    /// (log |κ|, log(|κ| / |dκ/ds|)) at t in closed form: one point of the LCG as
+    /// (−x, y) = (log κ, log(ρ |ds/dρ|)); see [`crate::log_graph`]. None where dκ/ds = 0.
+    #[must_use]
+    pub fn log_curvature_point(&self, t: f64) -> Option<(f64, f64)> {
+        let n = self.degree as f64;
+        let z = Complex::from_polar(self.s, self.theta);
+        let w = self.w(t);
+        let aw = w.norm();
+        let daw = ((z - 1.0) * w.conj()).re / aw;
+        if daw == 0.0 || self.theta == 0.0 {
+            return None;
+        }
+        let log_k = ((n - 1.0) * self.s * self.theta.sin().abs() / (n * self.length)).ln()
+            - (n + 1.0) * aw.ln();
+        let y = (n * self.length).ln() + n * aw.ln() - (n + 1.0).ln() - daw.abs().ln();
+        Some((-log_k, y))
+    }
+}
+
+fn geometric_sum(s: f64, theta: f64, n: usize) -> Complex<f64> {
+    let z = Complex::from_polar(s, theta);
+    let mut sum = Complex::new(0.0, 0.0);
+    let mut p = Complex::new(1.0, 0.0);
+    for _ in 0..n {
+        sum += p;
+        p *= z;
+    }
+    sum
+}
+
+/// The paper's method (eq. (7)): minimize |L Σ Mʲμ − (α₂ − α₀)|² / |α₂ − α₀|² over (L, s) with
+/// Nelder–Mead (argmin), θ = ψ/(n − 1) fixed; start (|α₂ − α₀|/n, 1) with a 10 % simplex.
+///
+/// Kept for comparison with [`TypicalPlanar::from_points`]. Returns the curve and the final
+/// relative endpoint residual.
+///
+/// # Errors
+/// As [`planar_feasibility`], [`ClassAError::Optimizer`] if argmin fails,
+/// [`ClassAError::NoConvergence`] for a non-positive L or s.
+pub fn planar_nelder_mead(
+    a0: &Vector2<f64>,
+    a1: &Vector2<f64>,
+    a2: &Vector2<f64>,
+    degree: usize,
+    max_iters: u64,
+) -> Result<(TypicalPlanar, f64), ClassAError> {
+    use argmin::core::{CostFunction, Executor, State};
+    use argmin::solver::neldermead::NelderMead;
+    if degree < 2 {
+        return Err(ClassAError::DegreeTooLow { degree, needed: 2 });
+    }
+    let g = PlanarGeometry::new(a0, a1, a2)?;
+    let theta = g.turn / (degree - 1) as f64;
+    let target = Complex::from_polar(g.chord_length, g.chord_angle);
+    struct Cost {
+        theta: f64,
+        n: usize,
+        target: Complex<f64>,
+    }
+    impl CostFunction for Cost {
+        type Param = Vec<f64>;
+        type Output = f64;
+        fn cost(&self, p: &Self::Param) -> Result<f64, argmin::core::Error> {
+            let r = geometric_sum(p[1], self.theta, self.n) * p[0] - self.target;
+            Ok(r.norm_sqr() / self.target.norm_sqr())
+        }
+    }
+    let l0 = g.chord_length / degree as f64;
+    let simplex = vec![vec![l0, 1.0], vec![1.1 * l0, 1.0], vec![l0, 1.1]];
+    let solver = NelderMead::new(simplex)
+        .with_sd_tolerance(1e-30)
+        .map_err(|e| ClassAError::Optimizer {
+            message: e.to_string(),
+        })?;
+    let res = Executor::new(
+        Cost {
+            theta,
+            n: degree,
+            target,
+        },
+        solver,
+    )
+    .configure(|st| st.max_iters(max_iters))
+    .run()
+    .map_err(|e| ClassAError::Optimizer {
+        message: e.to_string(),
+    })?;
+    let best = res.state().get_best_param().cloned().unwrap_or_default();
+    let residual = res.state().get_best_cost().sqrt();
+    match best.as_slice() {
+        [l, s] if *l > 0.0 && *s > 0.0 && l.is_finite() && s.is_finite() => Ok((
+            TypicalPlanar {
+                b0: *a0,
+                mu: g.mu,
+                length: *l,
+                s: *s,
+                theta,
+                degree,
+            },
+            residual,
+        )),
+        _ => Err(ClassAError::NoConvergence {
+            method: "Nelder-Mead",
+            residual,
+        }),
+    }
+}

@@ -1,6 +1,7 @@
 //! `BezierCurve`: a polynomial curve in D dimensions in Bernstein form.
 
 use nalgebra::SVector;
+use smallvec::SmallVec;
 
 use crate::casteljau::{
     HornerBernstein, compensated_de_casteljau, de_casteljau, de_casteljau_split, elevate_slice,
@@ -41,8 +42,12 @@ use crate::error::{CoreError, check_unit};
     serde(try_from = "CurveRepr<D>", into = "CurveRepr<D>")
 )]
 pub struct BezierCurve<const D: usize> {
-    points: Vec<SVector<f64, D>>,
+    points: Points<D>,
 }
+
+/// Control points, stored inline up to a cubic so that splitting low-degree curves (the
+/// common case in flattening) does not allocate.
+type Points<const D: usize> = SmallVec<[SVector<f64, D>; 4]>;
 
 /// Serialized form of a curve: its control points.
 #[cfg(feature = "serde")]
@@ -62,8 +67,26 @@ impl<const D: usize> TryFrom<CurveRepr<D>> for BezierCurve<D> {
 #[cfg(feature = "serde")]
 impl<const D: usize> From<BezierCurve<D>> for CurveRepr<D> {
     fn from(c: BezierCurve<D>) -> Self {
-        Self { points: c.points }
+        Self {
+            points: c.points.into_vec(),
+        }
     }
+}
+
+/// `n` zero points, inline (no allocation, no element-wise fill loop) when they fit.
+#[inline]
+fn zeroed_points<const D: usize>(n: usize) -> Points<D> {
+    if n <= 4 {
+        SmallVec::from_buf_and_len([SVector::zeros(); 4], n)
+    } else {
+        SmallVec::from_elem(SVector::zeros(), n)
+    }
+}
+
+/// de Casteljau for degree ≥ 4, kept out of line so the low-degree fast path inlines.
+#[inline(never)]
+fn eval_general<const D: usize>(points: &[SVector<f64, D>], t: f64) -> SVector<f64, D> {
+    de_casteljau(points, t).unwrap_or_else(SVector::zeros)
 }
 
 /// Checks a list of control points: non-empty and finite.
@@ -85,7 +108,9 @@ impl<const D: usize> BezierCurve<D> {
     /// coordinate.
     pub fn new(points: Vec<SVector<f64, D>>) -> Result<Self, CoreError> {
         validate_points(&points)?;
-        Ok(Self { points })
+        Ok(Self {
+            points: SmallVec::from_vec(points),
+        })
     }
 
     /// Creates a curve from a slice of control points (copied).
@@ -99,7 +124,9 @@ impl<const D: usize> BezierCurve<D> {
     /// Builds a curve from points already known to be valid (internal results).
     pub(crate) fn from_valid(points: Vec<SVector<f64, D>>) -> Self {
         debug_assert!(validate_points(&points).is_ok());
-        Self { points }
+        Self {
+            points: SmallVec::from_vec(points),
+        }
     }
 
     /// The control points P₀ … Pₙ.
@@ -111,7 +138,7 @@ impl<const D: usize> BezierCurve<D> {
     /// Consumes the curve and returns its control points.
     #[must_use]
     pub fn into_points(self) -> Vec<SVector<f64, D>> {
-        self.points
+        self.points.into_vec()
     }
 
     /// The degree n (number of control points − 1).
@@ -137,7 +164,7 @@ impl<const D: usize> BezierCurve<D> {
     ///
     /// # Errors
     /// [`CoreError::ParameterOutOfRange`] when t ∉ [0, 1] or t is NaN.
-    #[inline]
+    #[inline(always)]
     pub fn eval(&self, t: f64) -> Result<SVector<f64, D>, CoreError> {
         check_unit("t", t)?;
         Ok(self.eval_unchecked(t))
@@ -148,7 +175,7 @@ impl<const D: usize> BezierCurve<D> {
     /// Degrees ≤ 3 use the Bernstein weights directly (non-negative, summing to 1, and exactly
     /// (1, 0, …) at t = 0 and (…, 0, 1) at t = 1, so endpoints stay exact); higher degrees run
     /// de Casteljau.
-    #[inline]
+    #[inline(always)]
     pub(crate) fn eval_unchecked(&self, t: f64) -> SVector<f64, D> {
         let p = &self.points;
         let s = 1.0 - t;
@@ -160,7 +187,7 @@ impl<const D: usize> BezierCurve<D> {
                 let (s2, t2) = (s * s, t * t);
                 p[0] * (s2 * s) + p[1] * (3.0 * s2 * t) + p[2] * (3.0 * s * t2) + p[3] * (t2 * t)
             }
-            _ => de_casteljau(p, t).unwrap_or_else(SVector::zeros),
+            _ => eval_general(p, t),
         }
     }
 
@@ -222,18 +249,35 @@ impl<const D: usize> BezierCurve<D> {
     ///
     /// # Errors
     /// [`CoreError::ParameterOutOfRange`] when t ∉ [0, 1].
+    #[inline]
     pub fn split(&self, t: f64) -> Result<(Self, Self), CoreError> {
         check_unit("t", t)?;
         Ok(self.split_unchecked(t))
     }
 
+    #[inline]
     pub(crate) fn split_unchecked(&self, t: f64) -> (Self, Self) {
         let n = self.points.len();
-        let mut left = vec![SVector::zeros(); n];
-        let mut right = vec![SVector::zeros(); n];
+        if let [p0, p1, p2, p3] = self.points[..] {
+            // The cubic, unrolled (the same de Casteljau arithmetic, in registers).
+            let s = 1.0 - t;
+            let (p01, p12, p23) = (p0 * s + p1 * t, p1 * s + p2 * t, p2 * s + p3 * t);
+            let (p012, p123) = (p01 * s + p12 * t, p12 * s + p23 * t);
+            let mid = p012 * s + p123 * t;
+            return (
+                Self {
+                    points: SmallVec::from_buf([p0, p01, p012, mid]),
+                },
+                Self {
+                    points: SmallVec::from_buf([mid, p123, p23, p3]),
+                },
+            );
+        }
+        let mut left = zeroed_points::<D>(n);
+        let mut right = zeroed_points::<D>(n);
         // Buffers have the right length by construction.
         let _ = de_casteljau_split(&self.points, t, &mut left, &mut right);
-        (Self::from_valid(left), Self::from_valid(right))
+        (Self { points: left }, Self { points: right })
     }
 
     /// The piece of the curve on [a, b] ⊆ [0, 1], reparametrized to [0, 1].
@@ -261,9 +305,9 @@ impl<const D: usize> BezierCurve<D> {
     /// The same curve traversed backwards: control points in reverse order.
     #[must_use]
     pub fn reverse(&self) -> Self {
-        let mut p = self.points.clone();
-        p.reverse();
-        Self::from_valid(p)
+        let mut points = self.points.clone();
+        points.reverse();
+        Self { points }
     }
 
     /// The derivative curve (hodograph) B'(t) = Σ n (Pᵢ₊₁ − Pᵢ) B_{i,n−1}(t), degree n − 1.

@@ -6,9 +6,9 @@
 use std::path::{Path, PathBuf};
 
 mod bez_core;
+mod class_a;
 mod lambda_bezier;
 mod pde_bezier;
-mod class_a;
 
 use crate::DynError;
 use crate::tables::Table;

@@ -172,11 +172,21 @@ pub fn bernstein_product(a: &[f64], b: &[f64]) -> Vec<f64> {
         return Vec::new();
     }
     let (m, n) = (a.len() - 1, b.len() - 1);
+    // Binomial rows once (O(m + n) calls), not per term: the double loop is O(mn).
+    let wa: Vec<f64> = a
+        .iter()
+        .enumerate()
+        .map(|(i, &ai)| binomial(m, i) * ai)
+        .collect();
+    let wb: Vec<f64> = b
+        .iter()
+        .enumerate()
+        .map(|(j, &bj)| binomial(n, j) * bj)
+        .collect();
     let mut c = vec![0.0; m + n + 1];
-    for (i, &ai) in a.iter().enumerate() {
-        let wi = binomial(m, i);
-        for (j, &bj) in b.iter().enumerate() {
-            c[i + j] += wi * binomial(n, j) * ai * bj;
+    for (i, &ai) in wa.iter().enumerate() {
+        for (j, &bj) in wb.iter().enumerate() {
+            c[i + j] += ai * bj;
         }
     }
     for (k, ck) in c.iter_mut().enumerate() {

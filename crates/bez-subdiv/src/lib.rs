@@ -1,8 +1,41 @@
 //! # bez-subdiv
 //!
-//! Ma X H, Lin F M, Shen L Y. *Optimal subdivision parameters for planar Bézier curves.*
-//! Journal of University of Chinese Academy of Sciences, 2016, 33(3): 311-316.
+//! Ma Xiaohui, Lin Fengming, Shen Liyong. *Optimal subdivision parameters for planar Bézier
+//! curves* (平面 Bézier 曲线细分算法的参数优化). Journal of University of Chinese Academy of
+//! Sciences, 2016, 33(3): 311–316.
 //!
-//! Adaptive subdivision (flattening) of planar Bézier curves with the split parameter chosen
-//! to minimize the flatness or the convex-hull area of the two pieces, beside the classical
-//! fixed t = ½ de Casteljau rule.
+//! Adaptive subdivision ("flattening") of planar Bézier curves into control polygons that are
+//! flat to a tolerance (eq. (3)), with the split parameter of each piece chosen by a
+//! [`SplitRule`]: the classical t = ½, or the parameter minimizing the pieces' flatness
+//! (Def. 2.2) or convex-hull area (Def. 2.1), searched on the paper's grid or exactly.
+//!
+//! ```
+//! use bez_core::{BezierCurve, Vector2};
+//! use bez_subdiv::{FlattenOptions, SplitRule, flatten};
+//!
+//! let curve = BezierCurve::new(vec![
+//!     Vector2::new(0.0, 0.0), Vector2::new(1.0, 2.0),
+//!     Vector2::new(3.0, -1.0), Vector2::new(4.0, 1.0),
+//! ])?;
+//! let options = FlattenOptions { rule: SplitRule::flatness(), ..FlattenOptions::default() };
+//! let result = flatten(&curve, &options)?;
+//! assert_eq!(result.stats.splits + 1, result.stats.pieces);
+//! assert_eq!(result.polyline[0], curve.start());
+//! # Ok::<(), bez_subdiv::SubdivError>(())
+//! ```
+
+pub mod cases;
+mod error;
+mod flatten;
+mod measure;
+mod split_rule;
+
+pub use crate::error::SubdivError;
+pub use crate::flatten::{
+    DEFAULT_MAX_DEPTH, DEFAULT_TOLERANCE, FlattenOptions, FlattenStats, Flattening, Piece,
+    curve_size, flatten,
+};
+pub use crate::measure::{distance_to_chord_line, flatness, hull_area, max_chord_distance};
+pub use crate::split_rule::{
+    ADAPTIVE_BAND, Choice, Levels, Objective, PAPER_LEVELS, Search, SplitRule, split_objective,
+};

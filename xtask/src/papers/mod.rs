@@ -6,6 +6,7 @@
 use std::path::{Path, PathBuf};
 
 mod bez_core;
+mod bez_subdiv;
 mod class_a;
 mod lambda_bezier;
 mod pde_bezier;
@@ -33,6 +34,11 @@ const PAPERS: &[Paper] = &[
         name: "bez-core",
         tables: None,
         figures: Some(bez_core::figures),
+    },
+    Paper {
+        name: "bez-subdiv",
+        tables: Some(bez_subdiv::tables),
+        figures: None,
     },
     Paper {
         name: "lambda-bezier",

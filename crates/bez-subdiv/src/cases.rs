@@ -1,0 +1,44 @@
+//! The seeded test curves of the Table 1 reproduction.
+//!
+//! The paper's curves were "drawn interactively with random points" and are not given. We draw
+//! control points uniformly in the unit square with `ChaCha8Rng` seeded by
+//! [`TABLE1_SEED`] + degree, [`CURVES_PER_DEGREE`] curves per degree, in the paper's degrees.
+
+use bez_core::{BezierCurve, Vector2};
+use rand::{RngExt, SeedableRng};
+use rand_chacha::ChaCha8Rng;
+
+/// The degrees of the paper's Table 1.
+pub const TABLE1_DEGREES: [usize; 10] = [12, 13, 16, 17, 18, 19, 20, 22, 24, 25];
+/// Curves per degree (so a row is not one lucky draw).
+pub const CURVES_PER_DEGREE: usize = 5;
+/// Base seed of the generator.
+pub const TABLE1_SEED: u64 = 2016;
+
+/// `count` random curves of `degree` with control points uniform in [0, 1]².
+#[must_use]
+pub fn random_curves(degree: usize, count: usize, seed: u64) -> Vec<BezierCurve<2>> {
+    let mut rng = ChaCha8Rng::seed_from_u64(seed);
+    (0..count)
+        .filter_map(|_| {
+            let pts = (0..=degree)
+                .map(|_| Vector2::new(rng.random_range(0.0..1.0), rng.random_range(0.0..1.0)))
+                .collect();
+            BezierCurve::new(pts).ok()
+        })
+        .collect()
+}
+
+/// The Table 1 curves: for each paper degree, [`CURVES_PER_DEGREE`] seeded random curves.
+#[must_use]
+pub fn table1_curves() -> Vec<(usize, Vec<BezierCurve<2>>)> {
+    TABLE1_DEGREES
+        .iter()
+        .map(|&d| {
+            (
+                d,
+                random_curves(d, CURVES_PER_DEGREE, TABLE1_SEED + d as u64),
+            )
+        })
+        .collect()
+}

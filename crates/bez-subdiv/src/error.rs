@@ -1,0 +1,38 @@
+//! The error type of bez-subdiv.
+
+use bez_core::CoreError;
+
+/// Everything that can go wrong when measuring, splitting or flattening.
+#[derive(Debug, Clone, PartialEq, thiserror::Error)]
+#[non_exhaustive]
+pub enum SubdivError {
+    /// An error of the Bézier kernel (empty or non-finite control points, bad parameters).
+    #[error(transparent)]
+    Core(#[from] CoreError),
+    /// Flattening needs a curve, i.e. at least two control points.
+    #[error("flattening needs at least 2 control points, got {got}")]
+    TooFewPoints {
+        /// The number of control points given.
+        got: usize,
+    },
+    /// The tolerance ε is not positive and finite.
+    #[error("tolerance ε = {value} must be positive and finite")]
+    InvalidTolerance {
+        /// The value given.
+        value: f64,
+    },
+    /// A piece still failed the flatness test at the depth cap.
+    #[error(
+        "a piece is still not flat after {limit} subdivision levels (raise max_depth or the tolerance)"
+    )]
+    DepthLimit {
+        /// The depth cap that was reached.
+        limit: usize,
+    },
+    /// The 1-D optimizer failed.
+    #[error("the split-parameter optimizer failed: {message}")]
+    Optimizer {
+        /// argmin's message.
+        message: String,
+    },
+}

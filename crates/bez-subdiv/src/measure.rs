@@ -1,0 +1,123 @@
+//! Measures of a planar control polygon: flatness (Def. 2.2), chord distance (eq. (3)),
+//! convex-hull area (Def. 2.1).
+
+use bez_core::Vector2;
+
+/// Distance of `p` to the line through `a` and `b`; to the point `a` when a = b.
+///
+/// The fallback makes pieces whose ends coincide (closed loops) measurable: NOTES decision.
+#[must_use]
+pub fn distance_to_chord_line(p: &Vector2<f64>, a: &Vector2<f64>, b: &Vector2<f64>) -> f64 {
+    let d = b - a;
+    let len = d.norm();
+    let w = p - a;
+    if len == 0.0 {
+        w.norm()
+    } else {
+        (d.x * w.y - d.y * w.x).abs() / len
+    }
+}
+
+/// Flatness Dis (Ma et al., Def. 2.2): Σ_{i=1}^{n−1} D(P₀Pₙ, Pᵢ)², the sum of squared distances
+/// of the interior control points to the chord line P₀Pₙ (to P₀ when P₀ = Pₙ).
+///
+/// Zero for fewer than three points.
+#[must_use]
+pub fn flatness(points: &[Vector2<f64>]) -> f64 {
+    match points {
+        [a, interior @ .., b] => interior
+            .iter()
+            .map(|p| distance_to_chord_line(p, a, b).powi(2))
+            .sum(),
+        _ => 0.0,
+    }
+}
+
+/// The numerator of eq. (3): max_{i=1..n−1} D(P₀Pₙ, Pᵢ), the largest distance of an interior
+/// control point to the chord line (to P₀ when P₀ = Pₙ). Zero for fewer than three points.
+#[must_use]
+pub fn max_chord_distance(points: &[Vector2<f64>]) -> f64 {
+    match points {
+        [a, interior @ .., b] => interior
+            .iter()
+            .map(|p| distance_to_chord_line(p, a, b))
+            .fold(0.0, f64::max),
+        _ => 0.0,
+    }
+}
+
+/// Area of the convex hull of the control points (Def. 2.1), by Andrew's monotone chain.
+///
+/// O(n log n). Zero for fewer than three points or collinear points.
+#[must_use]
+pub fn hull_area(points: &[Vector2<f64>]) -> f64 {
+    if points.len() < 3 {
+        return 0.0;
+    }
+    let mut pts: Vec<Vector2<f64>> = points.to_vec();
+    pts.sort_by(|a, b| a.x.total_cmp(&b.x).then(a.y.total_cmp(&b.y)));
+    let cross = |o: &Vector2<f64>, a: &Vector2<f64>, b: &Vector2<f64>| {
+        (a.x - o.x) * (b.y - o.y) - (a.y - o.y) * (b.x - o.x)
+    };
+    let mut hull: Vec<Vector2<f64>> = Vec::with_capacity(2 * pts.len());
+    for pass in 0..2 {
+        let start = hull.len();
+        let iter: Box<dyn Iterator<Item = &Vector2<f64>>> = if pass == 0 {
+            Box::new(pts.iter())
+        } else {
+            Box::new(pts.iter().rev())
+        };
+        for p in iter {
+            while hull.len() >= start + 2
+                && cross(&hull[hull.len() - 2], &hull[hull.len() - 1], p) <= 0.0
+            {
+                hull.pop();
+            }
+            hull.push(*p);
+        }
+        hull.pop();
+    }
+    // Shoelace formula over the counter-clockwise hull.
+    let n = hull.len();
+    let twice: f64 = (0..n)
+        .map(|i| {
+            let (a, b) = (hull[i], hull[(i + 1) % n]);
+            a.x * b.y - a.y * b.x
+        })
+        .sum();
+    0.5 * twice.abs()
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn v(x: f64, y: f64) -> Vector2<f64> {
+        Vector2::new(x, y)
+    }
+
+    #[test]
+    fn hull_area_of_square_with_interior_points() {
+        let pts = [
+            v(0.0, 0.0),
+            v(0.5, 0.5),
+            v(2.0, 0.0),
+            v(2.0, 2.0),
+            v(1.0, 1.2),
+            v(0.0, 2.0),
+        ];
+        assert!((hull_area(&pts) - 4.0).abs() < 1e-15);
+        assert_eq!(hull_area(&[v(0.0, 0.0), v(1.0, 1.0), v(2.0, 2.0)]), 0.0);
+    }
+
+    #[test]
+    fn flatness_and_chord_distance() {
+        let pts = [v(0.0, 0.0), v(1.0, 1.0), v(2.0, -2.0), v(3.0, 0.0)];
+        assert!((flatness(&pts) - 5.0).abs() < 1e-15);
+        assert!((max_chord_distance(&pts) - 2.0).abs() < 1e-15);
+        // Closed piece: distances to P₀.
+        let closed = [v(0.0, 0.0), v(3.0, 4.0), v(0.0, 0.0)];
+        assert!((max_chord_distance(&closed) - 5.0).abs() < 1e-15);
+        assert_eq!(flatness(&pts[..2]), 0.0);
+    }
+}

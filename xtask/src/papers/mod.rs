@@ -46,14 +46,14 @@ const PAPERS: &[Paper] = &[
         figures: Some(lambda_bezier::figures),
     },
     Paper {
-        name: "pde-bezier",
-        tables: Some(pde_bezier::tables),
-        figures: Some(pde_bezier::figures),
-    },
-    Paper {
         name: "class-a",
         tables: Some(class_a::tables),
         figures: Some(class_a::figures),
+    },
+    Paper {
+        name: "pde-bezier",
+        tables: Some(pde_bezier::tables),
+        figures: Some(pde_bezier::figures),
     },
 ];
 

@@ -27,6 +27,7 @@
 pub mod cases;
 mod error;
 mod flatten;
+mod guaranteed;
 mod measure;
 mod split_rule;
 
@@ -35,6 +36,7 @@ pub use crate::flatten::{
     DEFAULT_MAX_DEPTH, DEFAULT_TOLERANCE, FlattenOptions, FlattenStats, Flattening, Piece,
     curve_size, flatten,
 };
+pub use crate::guaranteed::{FlatPoint, distance_to_segment, flatten_guaranteed};
 pub use crate::measure::{distance_to_chord_line, flatness, hull_area, max_chord_distance};
 pub use crate::split_rule::{
     ADAPTIVE_BAND, Choice, Levels, Objective, PAPER_LEVELS, Search, SplitRule, split_objective,

@@ -1,0 +1,105 @@
+//! The guaranteed flattening is within tolerance in true Hausdorff distance, measured, on random
+//! curves and on cusps and loops; eq. (3) alone is not.
+#![allow(
+    clippy::unwrap_used,
+    clippy::expect_used,
+    reason = "tests fail loudly on unexpected errors"
+)]
+
+use bez_core::proptest_support::curve;
+use bez_core::{BezierCurve, Vector2};
+use bez_subdiv::{FlattenOptions, distance_to_segment, flatten, flatten_guaranteed};
+use proptest::prelude::*;
+
+/// max over dense curve samples of the distance to the polyline, and max over dense polyline
+/// samples of the distance to the curve (exact nearest point).
+fn hausdorff(c: &BezierCurve<2>, poly: &[Vector2<f64>]) -> f64 {
+    let mut h = 0.0_f64;
+    for k in 0..=4000 {
+        let p = c.eval(f64::from(k) / 4000.0).unwrap();
+        let d = poly
+            .windows(2)
+            .map(|w| distance_to_segment(&p, &w[0], &w[1]))
+            .fold(f64::INFINITY, f64::min);
+        h = h.max(d);
+    }
+    for w in poly.windows(2) {
+        for k in 0..=8 {
+            let s = f64::from(k) / 8.0;
+            let q = w[0] * (1.0 - s) + w[1] * s;
+            h = h.max(c.nearest(&q).unwrap().distance);
+        }
+    }
+    h
+}
+
+fn cusp() -> BezierCurve<2> {
+    BezierCurve::new(vec![
+        Vector2::new(0.0, 0.0),
+        Vector2::new(1.0, 1.0),
+        Vector2::new(0.0, 1.0),
+        Vector2::new(1.0, 0.0),
+    ])
+    .unwrap()
+}
+
+fn looped() -> BezierCurve<2> {
+    BezierCurve::new(vec![
+        Vector2::new(0.0, 0.0),
+        Vector2::new(2.0, 2.0),
+        Vector2::new(-1.0, 2.0),
+        Vector2::new(1.0, 0.0),
+    ])
+    .unwrap()
+}
+
+#[test]
+fn cusp_and_loop_are_within_tolerance() {
+    for c in [cusp(), looped()] {
+        for tol in [1e-2, 1e-3] {
+            let pts = flatten_guaranteed(&c, tol, 40).unwrap();
+            let poly: Vec<_> = pts.iter().map(|p| p.point).collect();
+            assert!(hausdorff(&c, &poly) <= tol * (1.0 + 1e-9), "tol {tol}");
+            for p in &pts {
+                assert!((c.eval(p.t).unwrap() - p.point).norm() < 1e-12);
+            }
+        }
+    }
+}
+
+#[test]
+fn eq3_polyline_can_be_far_from_the_curve_when_it_folds_back() {
+    // A quadratic that runs out to x = 4/3 and back to x = 1 along the x axis: every control
+    // point is on the chord *line*, so eq. (3) accepts it as one piece, yet the chord [0, 1]
+    // misses the stretch beyond x = 1 (Hausdorff distance 1/3, size 2: 17 % instead of 1e-5).
+    let c = BezierCurve::new(vec![
+        Vector2::new(0.0, 0.0),
+        Vector2::new(2.0, 0.0),
+        Vector2::new(1.0, 0.0),
+    ])
+    .unwrap();
+    let f = flatten(&c, &FlattenOptions::default()).unwrap();
+    assert_eq!(f.stats.pieces, 1);
+    let chord = [c.start(), c.end()];
+    assert!((hausdorff(&c, &chord) - 1.0 / 3.0).abs() < 1e-6);
+    let tol = 1e-5 * bez_subdiv::curve_size(&c);
+    let poly: Vec<_> = flatten_guaranteed(&c, tol, 40)
+        .unwrap()
+        .iter()
+        .map(|p| p.point)
+        .collect();
+    assert!(hausdorff(&c, &poly) <= tol * (1.0 + 1e-9));
+}
+
+proptest! {
+    #![proptest_config(ProptestConfig::with_cases(24))]
+
+    #[test]
+    fn random_curves_are_within_tolerance(c in curve::<2>(2..=30, 1.0)) {
+        let tol = 2e-3;
+        let pts = flatten_guaranteed(&c, tol, 40).unwrap();
+        let poly: Vec<_> = pts.iter().map(|p| p.point).collect();
+        prop_assert!(hausdorff(&c, &poly) <= tol * (1.0 + 1e-9));
+        prop_assert!(pts.windows(2).all(|w| w[0].t < w[1].t));
+    }
+}

@@ -24,6 +24,7 @@
 //! # Ok::<(), bez_subdiv::SubdivError>(())
 //! ```
 
+mod bound;
 pub mod cases;
 mod error;
 mod flatten;
@@ -31,6 +32,7 @@ mod guaranteed;
 mod measure;
 mod split_rule;
 
+pub use crate::bound::{max_second_difference, wang_depth};
 pub use crate::error::SubdivError;
 pub use crate::flatten::{
     DEFAULT_MAX_DEPTH, DEFAULT_TOLERANCE, FlattenOptions, FlattenStats, Flattening, Piece,

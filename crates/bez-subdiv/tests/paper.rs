@@ -77,6 +77,14 @@ proptest! {
         }
     }
 
+    /// Wang's a-priori depth bounds the depth the fixed rule reaches.
+    #[test]
+    fn fixed_rule_depth_never_exceeds_wang_bound(c in curve::<2>(1..=30, 1.0), e in 1..7i32) {
+        let eps = 10f64.powi(-e);
+        let f = flatten(&c, &FlattenOptions { tolerance: eps, ..FlattenOptions::default() }).unwrap();
+        prop_assert!(f.stats.depth <= bez_subdiv::wang_depth(&c, eps), "{} > {}", f.stats.depth, bez_subdiv::wang_depth(&c, eps));
+    }
+
     /// Every rule's pieces re-evaluate onto the original curve, tile [0, 1], and lie within
     /// ε · size of their chord lines (what eq. (3) guarantees by the convex hull property).
     #[test]

@@ -1,0 +1,1 @@
+//! Test shapes for the reproduction (placeholder, filled below).

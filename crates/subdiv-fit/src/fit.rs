@@ -271,10 +271,18 @@ pub fn fit_with_stats<const D: usize>(
                 tolerance: options.tolerance,
             });
         }
+        let before = fitting.len();
         for idx in assessment.insert {
             if let Err(pos) = fitting.binary_search_by_key(&idx, |f| f.0) {
                 fitting.insert(pos, (idx, false));
             }
+        }
+        if fitting.len() == before {
+            return Err(SubdivFitError::NoConvergence {
+                rounds: round,
+                max_error: worst,
+                tolerance: options.tolerance,
+            });
         }
     }
     Err(SubdivFitError::NoConvergence {
@@ -545,6 +553,16 @@ fn assess<const D: usize>(
                     .map(|i| (i % n, (data[i % n] - p).norm()))
                     .min_by(|x, y| x.1.total_cmp(&y.1))
                     .map(|x| x.0);
+                if candidate.is_none() {
+                    // No data inside: the segment's shape is set by its neighbours' control
+                    // points, so tighten those by taking the data points just outside it.
+                    if closed || a >= 1 {
+                        insert.push((a + n - 1) % n);
+                    }
+                    if closed || b + 1 < n {
+                        insert.push((b + 1) % n);
+                    }
+                }
             }
         }
         if let Some(c) = candidate {

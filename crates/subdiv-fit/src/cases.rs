@@ -7,15 +7,17 @@
 
 use bez_core::Vector2;
 
-/// Closed "four-petal" shape: `r(θ) = 1 + 0.4 |sin 2θ|`, `θ_i = 2π i / (64 · density)`.
-/// Four concave corners at `θ = kπ/2` (turning about 77°) and four smooth petal tips: 64 points at
-/// density 1.
+/// Closed "four-petal" shape: `r(θ) = 1 + 0.4 |sin 2θ| + 0.1 cos(5θ + 0.3)`,
+/// `θ_i = 2π i / (64 · density)`.
+/// Four concave corners at `θ = kπ/2` (where `|sin 2θ|` kinks) and smooth petal tips made unequal by
+/// the 5th harmonic: 64 points and 9 curvature maxima (4 of them sharp) at density 1, like the
+/// paper's Fig. 2 and 4 data (64 points, 9 maxima, points 1, 4, 6, 9 sharp).
 pub fn closed_petals(density: usize) -> Vec<Vector2<f64>> {
     let n = 64 * density.max(1);
     let pts = (0..n)
         .map(|i| {
             let t = std::f64::consts::TAU * i as f64 / n as f64;
-            let r = 1.0 + 0.4 * (2.0 * t).sin().abs();
+            let r = 1.0 + 0.4 * (2.0 * t).sin().abs() + 0.1 * (5.0 * t + 0.3).cos();
             Vector2::new(r * t.cos(), r * t.sin())
         })
         .collect();

@@ -33,6 +33,20 @@ pub enum FitMode {
     LeastSquares,
 }
 
+/// Where a failing segment gets its new fitting point.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
+pub enum Insertion {
+    /// The data point of largest error in the segment (for a curve-to-data excess, the data point
+    /// nearest the worst curve sample). Literal reading of Sec. 4.3; on unevenly spaced fitting
+    /// points it can make the uniform-parameter interpolation ring and stall.
+    MaxError,
+    /// The interior data point nearest the segment's chord-length middle: neighbouring segments
+    /// never differ by more than a factor of about two in data count, which keeps the
+    /// uniform-parameter interpolation of eq. (4) from ringing.
+    Bisect,
+}
+
 /// Options of [`fit`].
 #[derive(Debug, Clone, Copy, PartialEq)]
 #[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
@@ -57,6 +71,8 @@ pub struct FitOptions {
     pub mode: FitMode,
     /// Samples per segment for the curve-to-data distance. Default 32.
     pub samples_per_segment: usize,
+    /// Insertion rule. Default [`Insertion::Bisect`].
+    pub insertion: Insertion,
 }
 
 impl FitOptions {
@@ -71,6 +87,7 @@ impl FitOptions {
             measure: ErrorMeasure::TwoSided,
             mode: FitMode::Interpolate,
             samples_per_segment: 32,
+            insertion: Insertion::Bisect,
         }
     }
 
@@ -532,7 +549,21 @@ fn assess<const D: usize>(
             }
         }
         max_d2c = max_d2c.max(seg_max);
-        let mut candidate = if seg_max > tol { seg_arg } else { None };
+        let bisect = (b > a + 1).then(|| {
+            let mid = chord
+                .iter()
+                .enumerate()
+                .skip(1)
+                .take(b - a - 1)
+                .min_by(|x, y| (x.1 - 0.5).abs().total_cmp(&(y.1 - 0.5).abs()))
+                .map_or(1, |x| x.0);
+            (a + mid) % n
+        });
+        let mut candidate = match (seg_max > tol, options.insertion) {
+            (false, _) => None,
+            (true, Insertion::MaxError) => seg_arg,
+            (true, Insertion::Bisect) => bisect,
+        };
         if options.measure == ErrorMeasure::TwoSided || candidate.is_none() {
             poly.clear();
             poly.extend((a..=b).map(|i| data[i % n]));
@@ -549,10 +580,14 @@ fn assess<const D: usize>(
             max_c2d = max_c2d.max(worst);
             if options.measure == ErrorMeasure::TwoSided && candidate.is_none() && worst > tol {
                 let p = combine(&ctrl, bspline_basis(worst_u));
-                candidate = (a + 1..b)
-                    .map(|i| (i % n, (data[i % n] - p).norm()))
-                    .min_by(|x, y| x.1.total_cmp(&y.1))
-                    .map(|x| x.0);
+                candidate = if options.insertion == Insertion::Bisect {
+                    bisect
+                } else {
+                    (a + 1..b)
+                        .map(|i| (i % n, (data[i % n] - p).norm()))
+                        .min_by(|x, y| x.1.total_cmp(&y.1))
+                        .map(|x| x.0)
+                };
                 if candidate.is_none() {
                     // No data inside: the segment's shape is set by its neighbours' control
                     // points, so tighten those by taking the data points just outside it.

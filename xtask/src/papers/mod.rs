@@ -6,6 +6,7 @@
 use std::path::{Path, PathBuf};
 
 mod bez_core;
+mod subdiv_fit;
 
 use crate::DynError;
 use crate::tables::Table;
@@ -25,11 +26,18 @@ pub(crate) struct Paper {
 }
 
 /// Every paper with experiments, in the order of the README's table.
-const PAPERS: &[Paper] = &[Paper {
-    name: "bez-core",
-    tables: None,
-    figures: Some(bez_core::figures),
-}];
+const PAPERS: &[Paper] = &[
+    Paper {
+        name: "bez-core",
+        tables: None,
+        figures: Some(bez_core::figures),
+    },
+    Paper {
+        name: "subdiv-fit",
+        tables: Some(subdiv_fit::tables),
+        figures: Some(subdiv_fit::figures),
+    },
+];
 
 /// The papers selected by `--only` (all when `None`).
 pub(crate) fn selected(only: Option<&str>) -> Result<Vec<&'static Paper>, DynError> {

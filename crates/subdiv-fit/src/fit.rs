@@ -229,18 +229,6 @@ pub fn fit<const D: usize>(
     closed: bool,
     options: &FitOptions,
 ) -> Result<Fit<D>, SubdivFitError> {
-    fit_with_stats(data, closed, options)
-}
-
-/// Same as [`fit`] (kept as the entry point that documents the per-round report).
-///
-/// # Errors
-/// As [`fit`].
-pub fn fit_with_stats<const D: usize>(
-    data: &[SVector<f64, D>],
-    closed: bool,
-    options: &FitOptions,
-) -> Result<Fit<D>, SubdivFitError> {
     validate(data, closed)?;
     validate_options(options)?;
     let n = data.len();

@@ -52,7 +52,5 @@ pub use curvature::{FeaturePoint, discrete_curvature, feature_points, turning_an
 pub use curve::{CurvePoint, SubdivCurve};
 pub use distance::{foot_point, point_polyline_distance};
 pub use error::SubdivFitError;
-pub use fit::{
-    ErrorMeasure, Fit, FitMode, FitOptions, Insertion, RoundReport, fit, fit_with_stats,
-};
+pub use fit::{ErrorMeasure, Fit, FitMode, FitOptions, Insertion, RoundReport, fit};
 pub use svg::svg_path;

@@ -2,8 +2,8 @@
 
 use subdiv_fit::cases::{closed_petals, open_wave};
 use subdiv_fit::{
-    ErrorMeasure, FitMode, FitOptions, SubdivCurve, SubdivFitError, Vector2, discrete_curvature,
-    feature_points, fit, point_polyline_distance,
+    ErrorMeasure, FitMode, FitOptions, Insertion, SubdivCurve, SubdivFitError, Vector2, Vector3,
+    discrete_curvature, feature_points, fit, point_polyline_distance,
 };
 
 #[allow(clippy::unwrap_used, reason = "test helper")]
@@ -51,19 +51,16 @@ fn recovers_data_sampled_from_a_subdivision_curve() {
     let pos = f.fitting.iter().position(|&i| i == 2 * per).unwrap();
     assert!(f.curve.sharp()[pos]);
     assert_eq!(f.curve.sharp().iter().filter(|s| **s).count(), 1);
-    // Recovery: the fitted curve is close to the truth everywhere (truth samples to fitted curve).
-    for k in 0..count * 4 {
-        let p = truth.eval(k as f64 / (4 * per) as f64).unwrap();
-        let mut dense = Vec::new();
-        let params: Vec<f64> = (0..=4000)
-            .map(|m| m as f64 * f.curve.segment_count() as f64 / 4000.0)
-            .collect();
-        f.curve.eval_many(&params, &mut dense).unwrap();
+    // Recovery: samples of the truth (between the data points too) are close to the fitted curve.
+    let mut dense = Vec::new();
+    let params: Vec<f64> = (0..=8000)
+        .map(|m| m as f64 * f.curve.segment_count() as f64 / 8000.0)
+        .collect();
+    f.curve.eval_many(&params, &mut dense).unwrap();
+    for k in 0..count * 3 {
+        let p = truth.eval(k as f64 / (3 * per) as f64).unwrap();
         let d = point_polyline_distance(&p, &dense);
         assert!(d < 2.0 * tol, "{d}");
-        if k > 8 {
-            break;
-        }
     }
 }
 
@@ -221,4 +218,47 @@ fn bad_input_gives_typed_errors() {
         fit(&ok, true, &capped),
         Err(SubdivFitError::NoConvergence { rounds: 0, .. })
     ));
+}
+
+#[test]
+fn max_error_insertion_stalls_where_bisection_converges() {
+    let literal = FitOptions {
+        insertion: Insertion::MaxError,
+        max_rounds: 30,
+        ..FitOptions::new(0.01)
+    };
+    assert!(fit(&open_wave(1), false, &literal).is_ok());
+    assert!(matches!(
+        fit(&open_wave(10), false, &literal),
+        Err(SubdivFitError::NoConvergence { .. })
+    ));
+    let bisect = FitOptions {
+        max_rounds: 30,
+        ..FitOptions::new(0.01)
+    };
+    assert!(fit(&open_wave(10), false, &bisect).is_ok());
+}
+
+#[test]
+fn fits_space_curves() {
+    // The closed test shape lifted onto a wavy band in 3D: corners stay corners.
+    let data: Vec<Vector3<f64>> = closed_petals(1)
+        .iter()
+        .enumerate()
+        .map(|(i, p)| {
+            Vector3::new(
+                p.x,
+                p.y,
+                0.2 * (std::f64::consts::TAU * i as f64 / 64.0).sin(),
+            )
+        })
+        .collect();
+    let f = fit(&data, true, &FitOptions::new(0.01)).unwrap();
+    let r = f.last().unwrap();
+    assert!(r.max_data_to_curve <= 0.01 && r.max_curve_to_data <= 0.01);
+    for corner in [0, 16, 32, 48] {
+        let j = f.fitting.iter().position(|&i| i == corner).unwrap();
+        assert!(f.curve.sharp()[j]);
+        assert_eq!(f.curve.points()[j], data[corner]);
+    }
 }

@@ -7,6 +7,7 @@ use std::path::{Path, PathBuf};
 
 mod bez_core;
 mod subdiv_fit;
+mod subdiv_fit_kurbo;
 
 use crate::DynError;
 use crate::tables::Table;

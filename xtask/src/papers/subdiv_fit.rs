@@ -41,7 +41,11 @@ fn configs() -> [(&'static str, FitOptions); 3] {
 }
 
 pub(crate) fn tables() -> Result<Vec<Table>, DynError> {
-    Ok(vec![fit_table()?, scaling_table()?])
+    Ok(vec![
+        fit_table()?,
+        scaling_table()?,
+        super::subdiv_fit_kurbo::table()?,
+    ])
 }
 
 fn fit_table() -> Result<Table, DynError> {

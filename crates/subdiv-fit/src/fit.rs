@@ -9,6 +9,7 @@ use crate::bspline::bspline_basis;
 use crate::curvature::feature_points;
 use crate::curve::combine;
 use crate::distance::{foot_point_ctrl, point_polyline_distance};
+use crate::tridiagonal::solve_tridiagonal;
 use crate::{SubdivCurve, SubdivFitError};
 
 /// Which error the loop drives below the tolerance.
@@ -212,8 +213,9 @@ fn validate_options(o: &FitOptions) -> Result<(), SubdivFitError> {
 /// 1. Initial fitting points: curvature maxima and sharp points ([`crate::feature_points`]); for closed
 ///    data with fewer than 3, the largest gaps are split at their middle index.
 /// 2. Control points from `M P = Q` (eq. 4): a sharp fitting point gives `p_i = q_i`, a regular one
-///    `(p_{i−1} + 4 p_i + p_{i+1}) / 6 = q_i`, solved by LU (the matrix is strictly diagonally dominant
-///    in its regular rows, so it is never singular in exact arithmetic).
+///    `(p_{i−1} + 4 p_i + p_{i+1}) / 6 = q_i`, a (cyclic) tridiagonal system solved in O(k) by
+///    Thomas's algorithm with a Sherman–Morrison corner correction (the matrix is strictly diagonally
+///    dominant in its regular rows, so it is never singular in exact arithmetic).
 /// 3. Errors per segment: each data point between two fitting points against that segment only, by
 ///    Newton on eq. (6) from the chord-length parameter; with [`ErrorMeasure::TwoSided`] also the
 ///    distance of dense curve samples to the segment's data polyline.
@@ -346,30 +348,22 @@ fn solve_curve<const D: usize>(
         sharp[0] = true;
         sharp[k - 1] = true;
     }
-    let mut m = DMatrix::<f64>::zeros(k, k);
-    let mut q = DMatrix::<f64>::zeros(k, D);
+    // Eq. (4) row by row: sharp p_i = q_i; regular (p_{i−1} + 4 p_i + p_{i+1}) / 6 = q_i.
+    let (mut lower, mut diag, mut upper) = (vec![0.0; k], vec![0.0; k], vec![0.0; k]);
+    let mut q = Vec::with_capacity(k);
     for (i, f) in fitting.iter().enumerate() {
         if sharp[i] {
-            m[(i, i)] = 1.0;
+            diag[i] = 1.0;
         } else {
-            m[(i, (i + k - 1) % k)] += 1.0 / 6.0;
-            m[(i, i)] += 4.0 / 6.0;
-            m[(i, (i + 1) % k)] += 1.0 / 6.0;
+            lower[i] = 1.0 / 6.0;
+            diag[i] = 4.0 / 6.0;
+            upper[i] = 1.0 / 6.0;
         }
-        for c in 0..D {
-            q[(i, c)] = data[f.0][c];
-        }
+        q.push(<[f64; D]>::from(data[f.0]));
     }
-    let p = m
-        .lu()
-        .solve(&q)
+    let p = solve_tridiagonal(&lower, &diag, &upper, &q, closed)
         .ok_or(SubdivFitError::SingularSystem { size: k })?;
-    let points: Vec<SVector<f64, D>> = (0..k)
-        .map(|i| SVector::<f64, D>::from_fn(|c, _| p[(i, c)]))
-        .collect();
-    if !points.iter().all(|p| p.iter().all(|c| c.is_finite())) {
-        return Err(SubdivFitError::SingularSystem { size: k });
-    }
+    let points: Vec<SVector<f64, D>> = p.into_iter().map(SVector::<f64, D>::from).collect();
     let curve = SubdivCurve::new(points, sharp, closed)?;
     match mode {
         FitMode::Interpolate => Ok(curve),

@@ -45,6 +45,7 @@ pub mod eigen;
 mod error;
 mod fit;
 mod svg;
+mod tridiagonal;
 
 pub use bez_core::{SVector, Vector2, Vector3};
 pub use bspline::{bspline_basis, bspline_basis_d1, bspline_basis_d2, bspline_to_bezier};

@@ -8,7 +8,8 @@
 //! Cubic B-spline subdivision curves whose vertices may be flagged sharp ([`SubdivCurve`]),
 //! their refinement (Sec. 2.1), their exact evaluation at any parameter with first and second
 //! derivatives (Sec. 2.2), exact conversion of every segment to a cubic Bézier curve, and the
-//! adaptive fitting of such curves to ordered data points (Secs. 3–5, [`fit`]).
+//! adaptive fitting of such curves to ordered data points (Secs. 3–5, [`fit`]), with a per-round
+//! report, a two-sided error measure and a least-squares mode beyond the paper.
 //!
 //! The paper's eigen-structure closed form (Theorem 2, eq. 3) collapses, once its misprints are
 //! corrected, to one uniform cubic B-spline segment per polygon edge: a sharp vertex `p_i` acts as if
@@ -33,6 +34,22 @@
 //! // Each segment is an exact cubic Bézier curve.
 //! let beziers = curve.to_beziers()?;
 //! assert_eq!(beziers.len(), 4);
+//! # Ok::<(), subdiv_fit::SubdivFitError>(())
+//! ```
+//!
+//! Fitting ordered data with corners (one of the crate's documented test shapes):
+//!
+//! ```
+//! use subdiv_fit::{FitOptions, cases, fit};
+//!
+//! let data = cases::closed_petals(1); // 64 points, unit bounding box, 4 corners
+//! let result = fit(&data, true, &FitOptions::new(0.01))?;
+//! let last = result.last().expect("one report per round");
+//! assert!(last.max_data_to_curve <= 0.01 && last.max_curve_to_data <= 0.01);
+//! // The corners are sharp control points sitting on their data points.
+//! assert_eq!(result.curve.sharp().iter().filter(|s| **s).count(), 4);
+//! let path = subdiv_fit::svg_path(&result.curve)?; // exact cubic Béziers
+//! assert!(path.starts_with("M "));
 //! # Ok::<(), subdiv_fit::SubdivFitError>(())
 //! ```
 

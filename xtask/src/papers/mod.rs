@@ -10,6 +10,8 @@ mod bez_subdiv;
 mod class_a;
 mod lambda_bezier;
 mod pde_bezier;
+mod subdiv_fit;
+mod subdiv_fit_kurbo;
 
 use crate::DynError;
 use crate::tables::Table;
@@ -49,6 +51,11 @@ const PAPERS: &[Paper] = &[
         name: "class-a",
         tables: Some(class_a::tables),
         figures: Some(class_a::figures),
+    },
+    Paper {
+        name: "subdiv-fit",
+        tables: Some(subdiv_fit::tables),
+        figures: Some(subdiv_fit::figures),
     },
     Paper {
         name: "pde-bezier",

@@ -1,0 +1,75 @@
+//! subdiv-fit: exact evaluation, fitting of the test shapes, growth with the number of points,
+//! and kurbo's curve simplification on the same polylines.
+#![allow(missing_docs, reason = "criterion macros generate undocumented items")]
+
+use std::hint::black_box;
+
+use criterion::{BenchmarkId, Criterion, criterion_group, criterion_main};
+use kurbo::simplify::{SimplifyOptions, simplify_bezpath};
+use kurbo::{BezPath, Point};
+use subdiv_fit::cases::{closed_petals, open_wave};
+use subdiv_fit::{FitOptions, SubdivCurve, Vector2, fit};
+
+fn eval(c: &mut Criterion) {
+    let data = closed_petals(1);
+    let curve = fit(&data, true, &FitOptions::new(0.01))
+        .map(|f| f.curve)
+        .unwrap_or_else(|_| {
+            SubdivCurve::smooth(data.clone(), true).unwrap_or_else(|_| unreachable!())
+        });
+    let segs = curve.segment_count() as f64;
+    let params: Vec<f64> = (0..1000).map(|k| k as f64 * segs / 999.0).collect();
+    let mut out = Vec::with_capacity(1000);
+    c.bench_function("subdiv_eval_1000_points", |b| {
+        b.iter(|| curve.eval_many(black_box(&params), &mut out));
+    });
+}
+
+fn fitting(c: &mut Criterion) {
+    let mut g = c.benchmark_group("subdiv_fit_closed_petals");
+    for density in [1, 10, 100] {
+        let data = closed_petals(density);
+        g.bench_with_input(BenchmarkId::from_parameter(data.len()), &data, |b, d| {
+            b.iter(|| fit(black_box(d), true, &FitOptions::new(0.01)));
+        });
+    }
+    g.finish();
+    let mut g = c.benchmark_group("subdiv_fit_open_wave");
+    for density in [1, 10, 100] {
+        let data = open_wave(density);
+        g.bench_with_input(BenchmarkId::from_parameter(data.len()), &data, |b, d| {
+            b.iter(|| fit(black_box(d), false, &FitOptions::new(0.01)));
+        });
+    }
+    g.finish();
+}
+
+fn polyline(data: &[Vector2<f64>], closed: bool) -> BezPath {
+    let mut p = BezPath::new();
+    for (i, v) in data.iter().enumerate() {
+        let q = Point::new(v.x, v.y);
+        if i == 0 {
+            p.move_to(q);
+        } else {
+            p.line_to(q);
+        }
+    }
+    if closed {
+        p.close_path();
+    }
+    p
+}
+
+fn kurbo_simplify(c: &mut Criterion) {
+    let mut g = c.benchmark_group("kurbo_simplify_closed_petals");
+    for density in [1, 10, 100] {
+        let path = polyline(&closed_petals(density), true);
+        g.bench_with_input(BenchmarkId::from_parameter(64 * density), &path, |b, p| {
+            b.iter(|| simplify_bezpath(black_box(p.iter()), 0.01, &SimplifyOptions::default()));
+        });
+    }
+    g.finish();
+}
+
+criterion_group!(benches, eval, fitting, kurbo_simplify);
+criterion_main!(benches);

@@ -1,0 +1,329 @@
+//! Cubic B-spline subdivision curves with sharp vertices (Sec. 2.1) and their exact
+//! evaluation (Sec. 2.2).
+
+use bez_core::{BezierCurve, SVector};
+
+use crate::SubdivFitError;
+use crate::bspline::{bspline_basis, bspline_basis_d1, bspline_basis_d2, bspline_to_bezier};
+
+/// A control polygon, open or closed, with one sharp flag per vertex.
+///
+/// Its limit curve under the rules of Sec. 2.1 has one segment per polygon edge:
+/// segment `i` runs from the limit position of `p_i` to that of `p_{i+1}`
+/// (indices modulo `n` for a closed polygon).
+/// Both end vertices of an open polygon are sharp, whatever flag is given.
+#[derive(Debug, Clone, PartialEq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
+pub struct SubdivCurve<const D: usize> {
+    points: Vec<SVector<f64, D>>,
+    sharp: Vec<bool>,
+    closed: bool,
+}
+
+/// Position and derivatives of the limit curve at one parameter.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct CurvePoint<const D: usize> {
+    /// Position C.
+    pub position: SVector<f64, D>,
+    /// First derivative C' with respect to the parameter.
+    pub first: SVector<f64, D>,
+    /// Second derivative C'' with respect to the parameter.
+    pub second: SVector<f64, D>,
+}
+
+impl<const D: usize> SubdivCurve<D> {
+    /// Builds a curve from its control polygon and per-vertex sharp flags.
+    ///
+    /// An open polygon needs at least 2 vertices, a closed one at least 3.
+    /// The end flags of an open polygon are forced to sharp.
+    ///
+    /// # Errors
+    /// [`SubdivFitError::TooFewPoints`], [`SubdivFitError::NonFinite`],
+    /// [`SubdivFitError::FlagCount`].
+    pub fn new(
+        points: Vec<SVector<f64, D>>,
+        mut sharp: Vec<bool>,
+        closed: bool,
+    ) -> Result<Self, SubdivFitError> {
+        let needed = if closed { 3 } else { 2 };
+        if points.len() < needed {
+            return Err(SubdivFitError::TooFewPoints {
+                got: points.len(),
+                needed,
+            });
+        }
+        if sharp.len() != points.len() {
+            return Err(SubdivFitError::FlagCount {
+                flags: sharp.len(),
+                points: points.len(),
+            });
+        }
+        if let Some(index) = points.iter().position(|p| !p.iter().all(|c| c.is_finite())) {
+            return Err(SubdivFitError::NonFinite { index });
+        }
+        if !closed {
+            sharp[0] = true;
+            let last = sharp.len() - 1;
+            sharp[last] = true;
+        }
+        Ok(Self {
+            points,
+            sharp,
+            closed,
+        })
+    }
+
+    /// A curve with every interior vertex regular (a uniform cubic B-spline, with sharp ends if open).
+    ///
+    /// # Errors
+    /// As [`SubdivCurve::new`].
+    pub fn smooth(points: Vec<SVector<f64, D>>, closed: bool) -> Result<Self, SubdivFitError> {
+        let n = points.len();
+        Self::new(points, vec![false; n], closed)
+    }
+
+    /// The control points.
+    pub fn points(&self) -> &[SVector<f64, D>] {
+        &self.points
+    }
+
+    /// The sharp flags, one per control point.
+    pub fn sharp(&self) -> &[bool] {
+        &self.sharp
+    }
+
+    /// Whether the polygon is closed.
+    pub fn is_closed(&self) -> bool {
+        self.closed
+    }
+
+    /// Number of limit-curve segments: `n` if closed, `n - 1` if open.
+    pub fn segment_count(&self) -> usize {
+        if self.closed {
+            self.points.len()
+        } else {
+            self.points.len() - 1
+        }
+    }
+
+    /// One level of the refinement of Sec. 2.1:
+    /// E-vertex `(p_i + p_{i+1}) / 2`, regular V-vertex `(p_{i-1} + 6 p_i + p_{i+1}) / 8`,
+    /// sharp V-vertex `p_i`.
+    /// V-vertices keep their flag; E-vertices are regular.
+    pub fn refine(&self) -> Self {
+        let n = self.points.len();
+        let edges = self.segment_count();
+        let mut points = Vec::with_capacity(n + edges);
+        let mut sharp = Vec::with_capacity(n + edges);
+        for i in 0..n {
+            let p = self.points[i];
+            let v = if self.sharp[i] {
+                p
+            } else {
+                // Regular vertices always have both neighbours (open ends are sharp).
+                let prev = self.points[(i + n - 1) % n];
+                let next = self.points[(i + 1) % n];
+                (prev + 6.0 * p + next) / 8.0
+            };
+            points.push(v);
+            sharp.push(self.sharp[i]);
+            if i < edges {
+                points.push((p + self.points[(i + 1) % n]) * 0.5);
+                sharp.push(false);
+            }
+        }
+        Self {
+            points,
+            sharp,
+            closed: self.closed,
+        }
+    }
+
+    /// `levels` levels of refinement.
+    pub fn refine_levels(&self, levels: usize) -> Self {
+        let mut c = self.clone();
+        for _ in 0..levels {
+            c = c.refine();
+        }
+        c
+    }
+
+    /// The limit position of vertex `i` (the limit mask):
+    /// `(p_{i-1} + 4 p_i + p_{i+1}) / 6` for a regular vertex, `p_i` for a sharp one.
+    ///
+    /// # Errors
+    /// [`SubdivFitError::SegmentOutOfRange`] if `i` is not a vertex.
+    pub fn limit_position(&self, i: usize) -> Result<SVector<f64, D>, SubdivFitError> {
+        let n = self.points.len();
+        if i >= n {
+            return Err(SubdivFitError::SegmentOutOfRange { index: i, count: n });
+        }
+        Ok(if self.sharp[i] {
+            self.points[i]
+        } else {
+            (self.points[(i + n - 1) % n] + 4.0 * self.points[i] + self.points[(i + 1) % n]) / 6.0
+        })
+    }
+
+    /// The four uniform cubic B-spline control points of segment `i`.
+    ///
+    /// This is the collapsed closed form of Sec. 2.2 (see the crate docs for the derivation):
+    /// `(a, p_i, p_{i+1}, d)` with `a = p_{i-1}` if `p_i` is regular, else the phantom point
+    /// `2 p_i − p_{i+1}`; and `d = p_{i+2}` if `p_{i+1}` is regular, else `2 p_{i+1} − p_i`.
+    /// With two sharp ends the four points are equally spaced on a line and the segment is the
+    /// line `(1 − u) p_i + u p_{i+1}` of eq. (2); with two regular ends it is eq. (1).
+    ///
+    /// # Errors
+    /// [`SubdivFitError::SegmentOutOfRange`].
+    pub fn segment_controls(&self, i: usize) -> Result<[SVector<f64, D>; 4], SubdivFitError> {
+        let count = self.segment_count();
+        if i >= count {
+            return Err(SubdivFitError::SegmentOutOfRange { index: i, count });
+        }
+        let n = self.points.len();
+        let j = (i + 1) % n;
+        let (b, c) = (self.points[i], self.points[j]);
+        let a = if self.sharp[i] {
+            2.0 * b - c
+        } else {
+            self.points[(i + n - 1) % n]
+        };
+        let d = if self.sharp[j] {
+            2.0 * c - b
+        } else {
+            self.points[(j + 1) % n]
+        };
+        Ok([a, b, c, d])
+    }
+
+    /// Position of segment `i` at its local parameter `u ∈ [0, 1]`.
+    ///
+    /// # Errors
+    /// [`SubdivFitError::SegmentOutOfRange`], [`SubdivFitError::ParameterOutOfRange`].
+    pub fn eval_segment(&self, i: usize, u: f64) -> Result<SVector<f64, D>, SubdivFitError> {
+        let ctrl = self.segment_controls(i)?;
+        check_unit(u)?;
+        Ok(combine(&ctrl, bspline_basis(u)))
+    }
+
+    /// Position, first and second derivative of segment `i` at `u ∈ [0, 1]`
+    /// (derivatives with respect to the local parameter).
+    ///
+    /// # Errors
+    /// As [`SubdivCurve::eval_segment`].
+    pub fn eval_segment_derivatives(
+        &self,
+        i: usize,
+        u: f64,
+    ) -> Result<CurvePoint<D>, SubdivFitError> {
+        let ctrl = self.segment_controls(i)?;
+        check_unit(u)?;
+        Ok(CurvePoint {
+            position: combine(&ctrl, bspline_basis(u)),
+            first: combine(&ctrl, bspline_basis_d1(u)),
+            second: combine(&ctrl, bspline_basis_d2(u)),
+        })
+    }
+
+    /// Maps the global parameter `s ∈ [0, segment_count]` to (segment, local parameter).
+    /// Integer values of `s` other than the end belong to the segment that starts there.
+    ///
+    /// # Errors
+    /// [`SubdivFitError::ParameterOutOfRange`].
+    pub fn locate(&self, s: f64) -> Result<(usize, f64), SubdivFitError> {
+        let count = self.segment_count();
+        let max = count as f64;
+        if !(0.0..=max).contains(&s) {
+            return Err(SubdivFitError::ParameterOutOfRange {
+                name: "s",
+                value: s,
+                min: 0.0,
+                max,
+            });
+        }
+        let i = (s.floor() as usize).min(count - 1);
+        Ok((i, s - i as f64))
+    }
+
+    /// Position at the global parameter `s ∈ [0, segment_count]`: vertex `i`'s limit is at `s = i`.
+    ///
+    /// # Errors
+    /// [`SubdivFitError::ParameterOutOfRange`].
+    pub fn eval(&self, s: f64) -> Result<SVector<f64, D>, SubdivFitError> {
+        let (i, u) = self.locate(s)?;
+        self.eval_segment(i, u)
+    }
+
+    /// Position and derivatives at the global parameter (one unit of `s` per segment,
+    /// so the derivatives equal the local ones).
+    ///
+    /// # Errors
+    /// [`SubdivFitError::ParameterOutOfRange`].
+    pub fn eval_derivatives(&self, s: f64) -> Result<CurvePoint<D>, SubdivFitError> {
+        let (i, u) = self.locate(s)?;
+        self.eval_segment_derivatives(i, u)
+    }
+
+    /// Evaluates at many global parameters, appending to `out` (cleared first).
+    ///
+    /// # Errors
+    /// [`SubdivFitError::ParameterOutOfRange`] for the first bad parameter.
+    pub fn eval_many(
+        &self,
+        params: &[f64],
+        out: &mut Vec<SVector<f64, D>>,
+    ) -> Result<(), SubdivFitError> {
+        out.clear();
+        out.reserve(params.len());
+        let mut cached: Option<(usize, [SVector<f64, D>; 4])> = None;
+        for &s in params {
+            let (i, u) = self.locate(s)?;
+            let ctrl = match cached {
+                Some((j, c)) if j == i => c,
+                _ => {
+                    let c = self.segment_controls(i)?;
+                    cached = Some((i, c));
+                    c
+                }
+            };
+            out.push(combine(&ctrl, bspline_basis(u)));
+        }
+        Ok(())
+    }
+
+    /// Segment `i` as an exact cubic Bézier curve.
+    ///
+    /// # Errors
+    /// [`SubdivFitError::SegmentOutOfRange`].
+    pub fn segment_bezier(&self, i: usize) -> Result<BezierCurve<D>, SubdivFitError> {
+        let ctrl = self.segment_controls(i)?;
+        Ok(BezierCurve::new(bspline_to_bezier(&ctrl).to_vec())?)
+    }
+
+    /// Every segment as an exact cubic Bézier curve, in order.
+    ///
+    /// # Errors
+    /// Only on non-finite intermediate values (impossible for a validated polygon of moderate size).
+    pub fn to_beziers(&self) -> Result<Vec<BezierCurve<D>>, SubdivFitError> {
+        (0..self.segment_count())
+            .map(|i| self.segment_bezier(i))
+            .collect()
+    }
+}
+
+fn check_unit(u: f64) -> Result<(), SubdivFitError> {
+    if (0.0..=1.0).contains(&u) {
+        Ok(())
+    } else {
+        Err(SubdivFitError::ParameterOutOfRange {
+            name: "u",
+            value: u,
+            min: 0.0,
+            max: 1.0,
+        })
+    }
+}
+
+pub(crate) fn combine<const D: usize>(ctrl: &[SVector<f64, D>; 4], w: [f64; 4]) -> SVector<f64, D> {
+    ctrl[0] * w[0] + ctrl[1] * w[1] + ctrl[2] * w[2] + ctrl[3] * w[3]
+}

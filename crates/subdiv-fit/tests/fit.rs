@@ -1,0 +1,264 @@
+//! The fitting loop: recovery, tolerance, corners, the two-sided measure, errors.
+
+use subdiv_fit::cases::{closed_petals, open_wave};
+use subdiv_fit::{
+    ErrorMeasure, FitMode, FitOptions, Insertion, SubdivCurve, SubdivFitError, Vector2, Vector3,
+    discrete_curvature, feature_points, fit, point_polyline_distance,
+};
+
+#[allow(clippy::unwrap_used, reason = "test helper")]
+fn all_within(data: &[Vector2<f64>], fitted: &subdiv_fit::Fit<2>, tol: f64) {
+    // Independent check: every data point against dense samples of the whole curve.
+    let c = &fitted.curve;
+    let mut samples = Vec::new();
+    let count = c.segment_count() * 400;
+    let params: Vec<f64> = (0..=count)
+        .map(|k| k as f64 * c.segment_count() as f64 / count as f64)
+        .collect();
+    c.eval_many(&params, &mut samples).unwrap();
+    for (i, v) in data.iter().enumerate() {
+        let d = samples
+            .iter()
+            .map(|s| (s - v).norm())
+            .fold(f64::INFINITY, f64::min);
+        assert!(d <= tol * 1.01, "data point {i} at distance {d}");
+    }
+}
+
+#[test]
+fn recovers_data_sampled_from_a_subdivision_curve() {
+    let ctrl = vec![
+        Vector2::new(0.0, 0.0),
+        Vector2::new(3.0, 0.5),
+        Vector2::new(4.0, 3.0),
+        Vector2::new(2.0, 4.0),
+        Vector2::new(-1.0, 3.0),
+        Vector2::new(-2.0, 1.0),
+    ];
+    let truth =
+        SubdivCurve::new(ctrl, vec![false, false, true, false, false, false], true).unwrap();
+    let per = 24;
+    let count = truth.segment_count() * per;
+    let data: Vec<Vector2<f64>> = (0..count)
+        .map(|k| truth.eval(k as f64 / per as f64).unwrap())
+        .collect();
+    let tol = 1e-3;
+    let f = fit(&data, true, &FitOptions::new(tol)).unwrap();
+    let last = f.last().unwrap();
+    assert!(last.max_data_to_curve <= tol && last.max_curve_to_data <= tol);
+    all_within(&data, &f, tol);
+    // The corner of the truth (vertex 2, data index 2 * per) is a sharp fitting point.
+    let pos = f.fitting.iter().position(|&i| i == 2 * per).unwrap();
+    assert!(f.curve.sharp()[pos]);
+    assert_eq!(f.curve.sharp().iter().filter(|s| **s).count(), 1);
+    // Recovery: samples of the truth (between the data points too) are close to the fitted curve.
+    let mut dense = Vec::new();
+    let params: Vec<f64> = (0..=8000)
+        .map(|m| m as f64 * f.curve.segment_count() as f64 / 8000.0)
+        .collect();
+    f.curve.eval_many(&params, &mut dense).unwrap();
+    for k in 0..count * 3 {
+        let p = truth.eval(k as f64 / (3 * per) as f64).unwrap();
+        let d = point_polyline_distance(&p, &dense);
+        assert!(d < 2.0 * tol, "{d}");
+    }
+}
+
+#[test]
+fn test_shapes_converge_with_corners_sharp() {
+    for (data, closed) in [(closed_petals(1), true), (open_wave(1), false)] {
+        for mode in [FitMode::Interpolate, FitMode::LeastSquares] {
+            let opts = FitOptions {
+                mode,
+                ..FitOptions::new(0.01)
+            };
+            let f = fit(&data, closed, &opts).unwrap();
+            all_within(&data, &f, 0.01);
+            let r = f.last().unwrap();
+            assert!(r.max_data_to_curve <= 0.01 && r.max_curve_to_data <= 0.01);
+            assert_eq!(r.control_points, f.curve.points().len());
+            // Sharp control points sit exactly on sharp data points (corners, ends).
+            for (j, &i) in f.fitting.iter().enumerate() {
+                if f.curve.sharp()[j] {
+                    assert_eq!(f.curve.points()[j], data[i]);
+                }
+            }
+        }
+    }
+    // The corners of the closed shape are at θ = kπ/2: data indices 0, 16, 32, 48.
+    let f = fit(&closed_petals(1), true, &FitOptions::new(0.01)).unwrap();
+    for corner in [0, 16, 32, 48] {
+        let j = f.fitting.iter().position(|&i| i == corner).unwrap();
+        assert!(f.curve.sharp()[j], "corner {corner}");
+    }
+    // The open shape's kinks at data indices 22 and 44, and its ends.
+    let f = fit(&open_wave(1), false, &FitOptions::new(0.01)).unwrap();
+    for corner in [0, 22, 44, 65] {
+        let j = f.fitting.iter().position(|&i| i == corner).unwrap();
+        assert!(f.curve.sharp()[j], "corner {corner}");
+    }
+}
+
+#[test]
+fn discrete_curvature_is_inverse_circumradius() {
+    // Three points on a circle of radius 2.
+    let r = 2.0;
+    let pts: Vec<Vector2<f64>> = [0.3_f64, 1.0, 2.2]
+        .iter()
+        .map(|t| Vector2::new(r * t.cos(), r * t.sin()))
+        .collect();
+    let k = discrete_curvature(&pts, true);
+    for ki in k {
+        assert!((ki - 0.5).abs() < 1e-14, "{ki}");
+    }
+    let open = discrete_curvature(&pts, false);
+    assert!(open[0].is_infinite() && open[2].is_infinite());
+}
+
+#[test]
+fn float_noise_on_straight_runs_and_arcs_makes_no_maxima() {
+    // A straight run with rounding-level noise and a circle: no interior features.
+    let line: Vec<Vector2<f64>> = (0..50)
+        .map(|i| Vector2::new(0.1 * i as f64, 0.1 * i as f64 * (1.0 / 3.0)))
+        .collect();
+    let f = feature_points(&line, false, 140f64.to_radians(), 1e-6, 1e-9);
+    assert_eq!(f.iter().map(|p| p.index).collect::<Vec<_>>(), vec![0, 49]);
+    let circle: Vec<Vector2<f64>> = (0..40)
+        .map(|i| {
+            let t = std::f64::consts::TAU * i as f64 / 40.0 + 0.1;
+            Vector2::new(t.cos(), t.sin())
+        })
+        .collect();
+    let f = feature_points(&circle, true, 140f64.to_radians(), 1e-6, 1e-9);
+    assert!(f.is_empty(), "{f:?}");
+    // Without the prominence test, rounding noise creates maxima on the circle.
+    let noisy = feature_points(&circle, true, 140f64.to_radians(), 0.0, 0.0);
+    assert!(!noisy.is_empty());
+}
+
+/// A square whose top side is given only by its two end points; corners are not taken for sharp
+/// (sharp angle 0), so the curve rounds them and bulges above the top side, where no data point
+/// lies: the paper's measure passes, the curve-to-data measure does not.
+#[test]
+fn one_sided_measure_misses_a_bulge_that_two_sided_catches() {
+    let mut data = Vec::new();
+    for i in 0..=20 {
+        data.push(Vector2::new(0.0, 1.0 - i as f64 / 20.0)); // left side, down
+    }
+    for i in 1..=20 {
+        data.push(Vector2::new(i as f64 / 20.0, 0.0)); // bottom
+    }
+    for i in 1..=20 {
+        data.push(Vector2::new(1.0, i as f64 / 20.0)); // right side, up; then back to (0, 1)
+    }
+    let tol = 0.02;
+    let paper = FitOptions {
+        sharp_angle: 0.0,
+        ..FitOptions::paper(tol)
+    };
+    let f = fit(&data, true, &paper).unwrap();
+    let r = f.last().unwrap();
+    assert!(r.max_data_to_curve <= tol);
+    assert!(r.max_curve_to_data > 2.0 * tol, "{r:?}");
+    let ours = FitOptions {
+        measure: ErrorMeasure::TwoSided,
+        ..paper
+    };
+    assert!(matches!(
+        fit(&data, true, &ours),
+        Err(SubdivFitError::NoConvergence { .. })
+    ));
+}
+
+#[test]
+fn bad_input_gives_typed_errors() {
+    let ok = closed_petals(1);
+    let o = FitOptions::new(0.01);
+    assert!(matches!(
+        fit(&ok[..2], false, &o),
+        Err(SubdivFitError::TooFewPoints { got: 2, .. })
+    ));
+    let mut nan = ok.clone();
+    nan[5].x = f64::NAN;
+    assert!(matches!(
+        fit(&nan, true, &o),
+        Err(SubdivFitError::NonFinite { index: 5 })
+    ));
+    let mut dup = ok.clone();
+    dup[7] = dup[6];
+    assert!(matches!(
+        fit(&dup, true, &o),
+        Err(SubdivFitError::DuplicatePoint { index: 6, next: 7 })
+    ));
+    let mut wrap = ok.clone();
+    wrap.push(wrap[0]);
+    assert!(matches!(
+        fit(&wrap, true, &o),
+        Err(SubdivFitError::DuplicatePoint { next: 0, .. })
+    ));
+    for t in [0.0, -1.0, f64::NAN, f64::INFINITY] {
+        assert!(matches!(
+            fit(&ok, true, &FitOptions::new(t)),
+            Err(SubdivFitError::InvalidTolerance { .. })
+        ));
+    }
+    let bad = FitOptions {
+        sharp_angle: 4.0,
+        ..o
+    };
+    assert!(matches!(
+        fit(&ok, true, &bad),
+        Err(SubdivFitError::InvalidOption {
+            name: "sharp_angle",
+            ..
+        })
+    ));
+    let capped = FitOptions { max_rounds: 0, ..o };
+    assert!(matches!(
+        fit(&ok, true, &capped),
+        Err(SubdivFitError::NoConvergence { rounds: 0, .. })
+    ));
+}
+
+#[test]
+fn max_error_insertion_stalls_where_bisection_converges() {
+    let literal = FitOptions {
+        insertion: Insertion::MaxError,
+        max_rounds: 30,
+        ..FitOptions::new(0.01)
+    };
+    assert!(fit(&open_wave(1), false, &literal).is_ok());
+    assert!(matches!(
+        fit(&open_wave(10), false, &literal),
+        Err(SubdivFitError::NoConvergence { .. })
+    ));
+    let bisect = FitOptions {
+        max_rounds: 30,
+        ..FitOptions::new(0.01)
+    };
+    assert!(fit(&open_wave(10), false, &bisect).is_ok());
+}
+
+#[test]
+fn fits_space_curves() {
+    // The closed test shape lifted onto a wavy band in 3D: corners stay corners.
+    let data: Vec<Vector3<f64>> = closed_petals(1)
+        .iter()
+        .enumerate()
+        .map(|(i, p)| {
+            Vector3::new(
+                p.x,
+                p.y,
+                0.2 * (std::f64::consts::TAU * i as f64 / 64.0).sin(),
+            )
+        })
+        .collect();
+    let f = fit(&data, true, &FitOptions::new(0.01)).unwrap();
+    let r = f.last().unwrap();
+    assert!(r.max_data_to_curve <= 0.01 && r.max_curve_to_data <= 0.01);
+    for corner in [0, 16, 32, 48] {
+        let j = f.fitting.iter().position(|&i| i == corner).unwrap();
+        assert!(f.curve.sharp()[j]);
+        assert_eq!(f.curve.points()[j], data[corner]);
+    }
+}

@@ -1,0 +1,241 @@
+//! subdiv-fit (Wang, Li, Tian 2008): the fitting table at tolerance 0.01, the scaling table, and
+//! Figs. 2, 4, 5 on the crate's documented test shapes.
+
+use std::fmt::Write as _;
+use std::path::{Path, PathBuf};
+use std::time::Instant;
+
+use serde_json::{Value, json};
+use subdiv_fit::cases::{closed_petals, open_wave};
+use subdiv_fit::{
+    ErrorMeasure, Fit, FitMode, FitOptions, SubdivCurve, Vector2, discrete_curvature, fit,
+};
+
+use crate::DynError;
+use crate::plot::{Plot, Series, Style};
+use crate::tables::Table;
+
+const TOL: f64 = 0.01;
+
+/// (name, data, closed, the paper's rounds for its own shape of that kind).
+fn shapes(density: usize) -> [(&'static str, Vec<Vector2<f64>>, bool, usize); 2] {
+    [
+        ("closed petals", closed_petals(density), true, 4),
+        ("open wave", open_wave(density), false, 6),
+    ]
+}
+
+fn configs() -> [(&'static str, FitOptions); 3] {
+    [
+        ("paper: one-sided, interpolation", FitOptions::paper(TOL)),
+        ("two-sided, interpolation", FitOptions::new(TOL)),
+        (
+            "two-sided, least squares",
+            FitOptions {
+                mode: FitMode::LeastSquares,
+                measure: ErrorMeasure::TwoSided,
+                ..FitOptions::new(TOL)
+            },
+        ),
+    ]
+}
+
+pub(crate) fn tables() -> Result<Vec<Table>, DynError> {
+    Ok(vec![
+        fit_table()?,
+        scaling_table()?,
+        super::subdiv_fit_kurbo::table()?,
+    ])
+}
+
+fn fit_table() -> Result<Table, DynError> {
+    let mut md = String::from(
+        "## subdiv-fit: fitting the test shapes at tolerance 0.01\n\n\
+         Initial fitting points are the curvature maxima (and sharp points); a round inserts fitting points where the error exceeds the tolerance.\n\
+         The paper's shapes are not published: its rounds (Fig. 4: 64 points, 9 maxima, 4 rounds; Fig. 5: 66 points, 8 maxima, 6 rounds) are for its own data, printed for reference only.\n\n\
+         | shape | points | initial fitting points (sharp) | configuration | rounds | control points | max data→curve | RMS data→curve | max curve→data | paper's rounds |\n\
+         |---|---|---|---|---|---|---|---|---|---|\n",
+    );
+    let mut rows = Vec::new();
+    for (name, data, closed, paper_rounds) in shapes(1) {
+        for (cfg, opts) in configs() {
+            let f = fit(&data, closed, &opts)?;
+            let r = f.last().ok_or("empty report")?;
+            let sharp0 = f.initial.len();
+            let sharp_count = f.curve.sharp().iter().filter(|s| **s).count();
+            writeln!(
+                md,
+                "| {name} | {} | {sharp0} ({sharp_count}) | {cfg} | {} | {} | {:.5} | {:.5} | {:.5} | {paper_rounds} |",
+                data.len(),
+                f.rounds(),
+                r.control_points,
+                r.max_data_to_curve,
+                r.rms_data_to_curve,
+                r.max_curve_to_data
+            )?;
+            rows.push(json!({
+                "shape": name, "configuration": cfg, "points": data.len(),
+                "initial": sharp0, "sharp": sharp_count, "rounds": f.rounds(),
+                "control_points": r.control_points,
+                "max_data_to_curve": r.max_data_to_curve,
+                "rms_data_to_curve": r.rms_data_to_curve,
+                "max_curve_to_data": r.max_curve_to_data,
+                "per_round": f.reports.iter().map(|x| json!([x.control_points, x.max_data_to_curve, x.max_curve_to_data])).collect::<Vec<Value>>(),
+            }));
+        }
+    }
+    Ok(Table {
+        name: "subdiv-fit-table1".into(),
+        markdown: md,
+        checked: Value::Array(rows),
+    })
+}
+
+fn scaling_table() -> Result<Table, DynError> {
+    let mut md = String::from(
+        "## subdiv-fit: the same shapes sampled 1x, 10x, 100x more densely (tolerance 0.01, two-sided, interpolation)\n\n\
+         Times are wall-clock of one release-mode fit on the machine that ran `cargo xtask tables` (not checked).\n\n\
+         | shape | density | points | rounds | control points | max data→curve | max curve→data | time (ms) |\n\
+         |---|---|---|---|---|---|---|---|\n",
+    );
+    let mut rows = Vec::new();
+    for density in [1, 10, 100] {
+        for (name, data, closed, _) in shapes(density) {
+            let opts = FitOptions::new(TOL);
+            let start = Instant::now();
+            let f = fit(&data, closed, &opts)?;
+            let ms = start.elapsed().as_secs_f64() * 1e3;
+            let r = f.last().ok_or("empty report")?;
+            writeln!(
+                md,
+                "| {name} | {density}x | {} | {} | {} | {:.5} | {:.5} | {ms:.2} |",
+                data.len(),
+                f.rounds(),
+                r.control_points,
+                r.max_data_to_curve,
+                r.max_curve_to_data
+            )?;
+            rows.push(json!({
+                "shape": name, "density": density, "points": data.len(), "rounds": f.rounds(),
+                "control_points": r.control_points,
+                "max_data_to_curve": r.max_data_to_curve, "max_curve_to_data": r.max_curve_to_data,
+            }));
+        }
+    }
+    Ok(Table {
+        name: "subdiv-fit-scaling".into(),
+        markdown: md,
+        checked: Value::Array(rows),
+    })
+}
+
+fn xy(p: &[Vector2<f64>]) -> Vec<(f64, f64)> {
+    p.iter().map(|q| (q.x, q.y)).collect()
+}
+
+fn dense(curve: &SubdivCurve<2>) -> Result<Vec<(f64, f64)>, DynError> {
+    let segs = curve.segment_count();
+    let count = segs * 40;
+    let params: Vec<f64> = (0..=count)
+        .map(|k| k as f64 * segs as f64 / count as f64)
+        .collect();
+    let mut out = Vec::new();
+    curve.eval_many(&params, &mut out)?;
+    Ok(xy(&out))
+}
+
+fn polygon(curve: &SubdivCurve<2>) -> Vec<(f64, f64)> {
+    let mut p = xy(curve.points());
+    if curve.is_closed()
+        && let Some(first) = p.first().copied()
+    {
+        p.push(first);
+    }
+    p
+}
+
+/// The curve after round 0 (initial fit) of a fit.
+fn initial_fit(data: &[Vector2<f64>], closed: bool) -> Result<(Fit<2>, SubdivCurve<2>), DynError> {
+    let f = fit(data, closed, &FitOptions::new(TOL))?;
+    // Round 0 alone: the same initial points with a cap of 0 rounds and a huge tolerance.
+    let first = fit(
+        data,
+        closed,
+        &FitOptions {
+            tolerance: f64::MAX,
+            ..FitOptions::new(TOL)
+        },
+    )?;
+    Ok((f, first.curve))
+}
+
+/// Plots (a) the initial fit from the curvature maxima and (b) the final fit at tolerance 0.01.
+fn fit_plots(title: &str, data: &[Vector2<f64>], closed: bool) -> Result<(Plot, Plot), DynError> {
+    let (f, initial) = initial_fit(data, closed)?;
+    let pts_of = |idx: &[usize]| idx.iter().map(|&i| (data[i].x, data[i].y)).collect();
+    let a = Plot::new(format!("{title} (a) initial fit"), "x", "y")
+        .equal()
+        .with(Series::new("data", xy(data), Style::Points))
+        .with(Series::new(
+            "control polygon",
+            polygon(&initial),
+            Style::LinePoints,
+        ))
+        .with(Series::new("curve", dense(&initial)?, Style::Line))
+        .with(Series::new(
+            "fitting points",
+            pts_of(&f.initial),
+            Style::Points,
+        ));
+    let b = Plot::new(
+        format!(
+            "{title} (b) final fit, {} rounds, tolerance 0.01",
+            f.rounds()
+        ),
+        "x",
+        "y",
+    )
+    .equal()
+    .with(Series::new("data", xy(data), Style::Points))
+    .with(Series::new(
+        "control polygon",
+        polygon(&f.curve),
+        Style::LinePoints,
+    ))
+    .with(Series::new("curve", dense(&f.curve)?, Style::Line))
+    .with(Series::new(
+        "fitting points",
+        pts_of(&f.fitting),
+        Style::Points,
+    ));
+    Ok((a, b))
+}
+
+pub(crate) fn figures(dir: &Path) -> Result<Vec<PathBuf>, DynError> {
+    let mut out = Vec::new();
+    // Fig. 2: discrete curvature of the closed shape (the data of Fig. 4) and the initial fit.
+    let data = closed_petals(1);
+    let k = discrete_curvature(&data, true);
+    let curv: Vec<(f64, f64)> = k.iter().enumerate().map(|(i, v)| (i as f64, *v)).collect();
+    let f = fit(&data, true, &FitOptions::new(TOL))?;
+    let maxima: Vec<(f64, f64)> = f.initial.iter().map(|&i| (i as f64, k[i])).collect();
+    out.push(
+        Plot::new(
+            "Fig. 2 (a): discrete curvature of the closed test shape",
+            "data index",
+            "K = 1 / circumradius",
+        )
+        .with(Series::new("curvature", curv, Style::LinePoints))
+        .with(Series::new("initial fitting points", maxima, Style::Points))
+        .write_svg(&dir.join("fig2a-curvature.svg"))?,
+    );
+    let (initial, _) = fit_plots("Fig. 2 (b)", &data, true)?;
+    out.push(initial.write_svg(&dir.join("fig2b-initial-fit.svg"))?);
+    let (a, b) = fit_plots("Fig. 4, closed", &data, true)?;
+    out.push(a.write_svg(&dir.join("fig4a-closed-initial.svg"))?);
+    out.push(b.write_svg(&dir.join("fig4b-closed-final.svg"))?);
+    let (a, b) = fit_plots("Fig. 5, open", &open_wave(1), false)?;
+    out.push(a.write_svg(&dir.join("fig5a-open-initial.svg"))?);
+    out.push(b.write_svg(&dir.join("fig5b-open-final.svg"))?);
+    Ok(out)
+}

@@ -30,6 +30,7 @@ mod error;
 mod flatten;
 mod guaranteed;
 mod measure;
+mod near_optimal;
 mod split_rule;
 
 pub use crate::bound::{max_second_difference, wang_depth};
@@ -40,6 +41,7 @@ pub use crate::flatten::{
 };
 pub use crate::guaranteed::{FlatPoint, distance_to_segment, flatten_guaranteed};
 pub use crate::measure::{distance_to_chord_line, flatness, hull_area, max_chord_distance};
+pub use crate::near_optimal::{flatten_near_optimal, optimal_segment_count};
 pub use crate::split_rule::{
     ADAPTIVE_BAND, Choice, Levels, Objective, PAPER_LEVELS, Search, SplitRule, split_objective,
 };

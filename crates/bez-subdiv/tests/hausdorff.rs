@@ -8,7 +8,10 @@
 
 use bez_core::proptest_support::curve;
 use bez_core::{BezierCurve, Vector2};
-use bez_subdiv::{FlattenOptions, distance_to_segment, flatten, flatten_guaranteed};
+use bez_subdiv::{
+    FlattenOptions, distance_to_segment, flatten, flatten_guaranteed, flatten_near_optimal,
+    optimal_segment_count,
+};
 use proptest::prelude::*;
 
 /// max over dense curve samples of the distance to the polyline, and max over dense polyline
@@ -54,12 +57,48 @@ fn looped() -> BezierCurve<2> {
 }
 
 #[test]
+fn near_optimal_count_approaches_the_lower_bound_on_a_circle_arc() {
+    // Quarter circle (cubic approximation, radius 1): N* = (π/2) / √(8 tol).
+    let k = 4.0 * (2f64.sqrt() - 1.0) / 3.0;
+    let c = BezierCurve::new(vec![
+        Vector2::new(1.0, 0.0),
+        Vector2::new(1.0, k),
+        Vector2::new(k, 1.0),
+        Vector2::new(0.0, 1.0),
+    ])
+    .unwrap();
+    let tol = 1e-5;
+    let n_star = optimal_segment_count(&c, tol).unwrap();
+    let expected = std::f64::consts::FRAC_PI_2 / (8.0 * tol).sqrt();
+    assert!(
+        (n_star / expected - 1.0).abs() < 0.01,
+        "{n_star} vs {expected}"
+    );
+    let pts = flatten_near_optimal(&c, tol, 40).unwrap();
+    let segments = (pts.len() - 1) as f64;
+    assert!(
+        segments <= 1.15 * n_star.ceil(),
+        "{segments} vs N* = {n_star}"
+    );
+    let poly: Vec<_> = pts.iter().map(|p| p.point).collect();
+    assert!(hausdorff(&c, &poly) <= tol * (1.0 + 1e-9));
+    let guaranteed = flatten_guaranteed(&c, tol, 40).unwrap();
+    assert!(guaranteed.len() > pts.len());
+}
+
+#[test]
 fn cusp_and_loop_are_within_tolerance() {
     for c in [cusp(), looped()] {
         for tol in [1e-2, 1e-3] {
             let pts = flatten_guaranteed(&c, tol, 40).unwrap();
             let poly: Vec<_> = pts.iter().map(|p| p.point).collect();
             assert!(hausdorff(&c, &poly) <= tol * (1.0 + 1e-9), "tol {tol}");
+            let near: Vec<_> = flatten_near_optimal(&c, tol, 40)
+                .unwrap()
+                .iter()
+                .map(|p| p.point)
+                .collect();
+            assert!(hausdorff(&c, &near) <= tol * (1.0 + 1e-9), "tol {tol}");
             for p in &pts {
                 assert!((c.eval(p.t).unwrap() - p.point).norm() < 1e-12);
             }
@@ -92,7 +131,7 @@ fn eq3_polyline_can_be_far_from_the_curve_when_it_folds_back() {
 }
 
 proptest! {
-    #![proptest_config(ProptestConfig::with_cases(24))]
+    #![proptest_config(ProptestConfig::with_cases(12))]
 
     #[test]
     fn random_curves_are_within_tolerance(c in curve::<2>(2..=30, 1.0)) {
@@ -101,5 +140,9 @@ proptest! {
         let poly: Vec<_> = pts.iter().map(|p| p.point).collect();
         prop_assert!(hausdorff(&c, &poly) <= tol * (1.0 + 1e-9));
         prop_assert!(pts.windows(2).all(|w| w[0].t < w[1].t));
+        let near = flatten_near_optimal(&c, tol, 40).unwrap();
+        let poly: Vec<_> = near.iter().map(|p| p.point).collect();
+        prop_assert!(hausdorff(&c, &poly) <= tol * (1.0 + 1e-9));
+        prop_assert!(near.len() <= pts.len());
     }
 }

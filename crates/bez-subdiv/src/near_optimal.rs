@@ -80,13 +80,23 @@ fn piece_within(curve: &BezierCurve<2>, a: f64, b: f64, tol: f64) -> bool {
         .map(|p| u.x * (p.y - p0.y) - u.y * (p.x - p0.x))
         .collect();
     let proj: Vec<f64> = piece.points().iter().map(|p| u.dot(&(p - p0))).collect();
-    let extreme = |c: &[f64], f: &dyn Fn(f64) -> bool| {
+    // Values at the end points and at every stationary point bound the polynomial's range.
+    let range = |c: &[f64]| {
         roots_in_unit_interval(&bernstein_derivative_coeffs(c))
             .into_iter()
             .chain([0.0, 1.0])
-            .all(|t| f(eval_bernstein_poly(c, t)))
+            .map(|t| eval_bernstein_poly(c, t))
+            .fold((f64::INFINITY, f64::NEG_INFINITY), |(lo, hi), v| {
+                (lo.min(v), hi.max(v))
+            })
     };
-    extreme(&dist, &|v| v.abs() <= tol) && extreme(&proj, &|v| (-tol..=len + tol).contains(&v))
+    let (dlo, dhi) = range(&dist);
+    let (plo, phi) = range(&proj);
+    // A point at perpendicular offset ≤ d whose projection overshoots the chord by ≤ o is
+    // within √(d² + o²) of the segment.
+    let d = dlo.abs().max(dhi.abs());
+    let o = (-plo).max(phi - len).max(0.0);
+    d.hypot(o) <= tol
 }
 
 /// Points B(tᵢ) placed by the density √(|κ|/(8 tol)) |B'(t)|: ⌈N*⌉ segments at equal steps of

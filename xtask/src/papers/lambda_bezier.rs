@@ -120,7 +120,8 @@ pub(crate) fn figures(dir: &Path) -> Result<Vec<PathBuf>, DynError> {
     for l in [CIRCLE_LAMBDA, best] {
         let halves = circle_halves(l)?;
         p = p.with(Series::new(
-            format!("λ = {l}"),
+            // Four decimals: the last digits of Brent's minimizer are rounding noise.
+            format!("λ = {l:.4}"),
             polyline(&halves, 200),
             Style::Line,
         ));

@@ -61,5 +61,24 @@ fn versus_kurbo(c: &mut Criterion) {
     g.finish();
 }
 
-criterion_group!(benches, rules, versus_kurbo);
+/// 64 curves of degree 12: one by one on one thread, and `flatten_batch` with rayon.
+fn batch(c: &mut Criterion) {
+    let curves = bez_subdiv::cases::random_curves(12, 64, 5);
+    let options = FlattenOptions::default();
+    let mut g = c.benchmark_group("flatten_64_curves");
+    g.bench_function("sequential", |b| {
+        b.iter(|| {
+            curves
+                .iter()
+                .map(|cv| flatten(black_box(cv), &options))
+                .collect::<Vec<_>>()
+        });
+    });
+    g.bench_function("rayon batch", |b| {
+        b.iter(|| bez_subdiv::flatten_batch(black_box(&curves), &options));
+    });
+    g.finish();
+}
+
+criterion_group!(benches, rules, versus_kurbo, batch);
 criterion_main!(benches);

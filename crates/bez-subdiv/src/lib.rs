@@ -9,6 +9,9 @@
 //! [`SplitRule`]: the classical t = ½, or the parameter minimizing the pieces' flatness
 //! (Def. 2.2) or convex-hull area (Def. 2.1), searched on the paper's grid or exactly.
 //!
+//! Feature `rayon`: [`flatten_batch`] flattens many curves in parallel. Feature `serde`: serde on
+//! the data types.
+//!
 //! ```
 //! use bez_core::{BezierCurve, Vector2};
 //! use bez_subdiv::{FlattenOptions, SplitRule, flatten};
@@ -24,6 +27,7 @@
 //! # Ok::<(), bez_subdiv::SubdivError>(())
 //! ```
 
+mod batch;
 mod bound;
 pub mod cases;
 mod error;
@@ -33,6 +37,7 @@ mod measure;
 mod near_optimal;
 mod split_rule;
 
+pub use crate::batch::flatten_batch;
 pub use crate::bound::{max_second_difference, wang_depth};
 pub use crate::error::SubdivError;
 pub use crate::flatten::{

@@ -2,22 +2,11 @@
 
 #![allow(clippy::unwrap_used, reason = "test helpers unwrap known-good inputs")]
 
-use bez_core::{BezierSurface, Vector3};
-use pde_bezier::{Discretization, Method, Operator, Problem, solve};
+mod common;
 
-fn poly_surface(du: usize, dv: usize, seed: u64) -> BezierSurface<3> {
-    let mut s = seed;
-    let mut next = || {
-        s = s
-            .wrapping_mul(6364136223846793005)
-            .wrapping_add(1442695040888963407);
-        ((s >> 33) as f64 / (1u64 << 31) as f64) * 2.0 - 1.0
-    };
-    let pts = (0..(du + 1) * (dv + 1))
-        .map(|_| Vector3::new(next(), next(), next()))
-        .collect();
-    BezierSurface::from_flat(du, dv, pts).unwrap()
-}
+use bez_core::BezierSurface;
+use common::random_surface;
+use pde_bezier::{Discretization, Method, Operator, Problem, solve};
 
 fn assert_reproduces(op: Operator, x: &BezierSurface<3>, disc: Discretization, tol: f64) {
     let problem = Problem::manufactured(op, x).unwrap();
@@ -38,21 +27,21 @@ fn assert_reproduces(op: Operator, x: &BezierSurface<3>, disc: Discretization, t
 
 #[test]
 fn single_patch_laplace_reproduces_polynomial() {
-    let x = poly_surface(4, 3, 1);
+    let x = random_surface(4, 3, 1);
     let op = Operator::second_order(1.0, 2.5).unwrap();
     assert_reproduces(op, &x, Discretization::single(5, 5), 1e-10);
 }
 
 #[test]
 fn single_patch_fourth_order_reproduces_polynomial() {
-    let x = poly_surface(5, 4, 2);
+    let x = random_surface(5, 4, 2);
     let op = Operator::bloor_wilson(0.8).unwrap();
     assert_reproduces(op, &x, Discretization::single(6, 6), 1e-9);
 }
 
 #[test]
 fn single_patch_sixth_order_reproduces_polynomial() {
-    let x = poly_surface(6, 6, 3);
+    let x = random_surface(6, 6, 3);
     let op = Operator::new(vec![
         pde_bezier::Term {
             coeff: 1.0,
@@ -76,7 +65,7 @@ fn single_patch_sixth_order_reproduces_polynomial() {
 
 #[test]
 fn patch_grid_reproduces_polynomial() {
-    let x = poly_surface(4, 4, 4);
+    let x = random_surface(4, 4, 4);
     let op = Operator::second_order(1.0, 1.0).unwrap();
     let disc = Discretization {
         degree_u: 5,

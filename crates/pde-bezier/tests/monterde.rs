@@ -5,7 +5,10 @@
 
 #![allow(clippy::unwrap_used, reason = "test helpers unwrap known-good inputs")]
 
+mod common;
+
 use bez_core::{BezierSurface, Vector3, binomial};
+use common::random_surface;
 use nalgebra::DMatrix;
 use pde_bezier::{Discretization, Method, Operator, Problem, side_of, solve};
 
@@ -33,11 +36,19 @@ fn stiffness(n: usize) -> DMatrix<f64> {
     })
 }
 
-fn dirichlet_extremal(boundary: &BezierSurface<3>) -> BezierSurface<3> {
+/// Minimizes a quadratic energy over the control points at least `fixed` rows away from every
+/// side, the others held at `boundary`'s: solves Σ_kl w(i, j, k, l) a_kl = 0 for every free
+/// (i, j), where w is the energy's Hessian entry.
+fn extremal(
+    boundary: &BezierSurface<3>,
+    fixed: usize,
+    w: impl Fn(usize, usize, usize, usize) -> f64,
+) -> BezierSurface<3> {
     let (n, m) = (boundary.degree_u(), boundary.degree_v());
-    let (an, cn, am, cm) = (gram(n), stiffness(n), gram(m), stiffness(m));
     let idx = |i: usize, j: usize| i * (m + 1) + j;
-    let interior: Vec<(usize, usize)> = (1..n).flat_map(|i| (1..m).map(move |j| (i, j))).collect();
+    let interior: Vec<(usize, usize)> = (fixed..=n - fixed)
+        .flat_map(|i| (fixed..=m - fixed).map(move |j| (i, j)))
+        .collect();
     let pos = |i: usize, j: usize| interior.iter().position(|&p| p == (i, j));
     let size = interior.len();
     let mut a = DMatrix::<f64>::zeros(size, size);
@@ -45,13 +56,13 @@ fn dirichlet_extremal(boundary: &BezierSurface<3>) -> BezierSurface<3> {
     for (r, &(i, j)) in interior.iter().enumerate() {
         for k in 0..=n {
             for l in 0..=m {
-                let w = cn[(i, k)] * am[(j, l)] + an[(i, k)] * cm[(j, l)];
+                let wt = w(i, j, k, l);
                 match pos(k, l) {
-                    Some(c) => a[(r, c)] += w,
+                    Some(c) => a[(r, c)] += wt,
                     None => {
                         let p = boundary.points()[idx(k, l)];
                         for d in 0..3 {
-                            b[(r, d)] -= w * p[d];
+                            b[(r, d)] -= wt * p[d];
                         }
                     }
                 }
@@ -66,20 +77,19 @@ fn dirichlet_extremal(boundary: &BezierSurface<3>) -> BezierSurface<3> {
     BezierSurface::from_flat(n, m, pts).unwrap()
 }
 
+/// Minimizes ∫∫ |P_u|² + |P_v|² with the outer row of control points on every side fixed.
+fn dirichlet_extremal(boundary: &BezierSurface<3>) -> BezierSurface<3> {
+    let (n, m) = (boundary.degree_u(), boundary.degree_v());
+    let (an, cn, am, cm) = (gram(n), stiffness(n), gram(m), stiffness(m));
+    extremal(boundary, 1, |i, j, k, l| {
+        cn[(i, k)] * am[(j, l)] + an[(i, k)] * cm[(j, l)]
+    })
+}
+
 #[test]
 fn galerkin_laplace_is_monterde_dirichlet_extremal() {
     for (n, m, seed) in [(4usize, 4usize, 1u64), (5, 3, 2), (6, 5, 3)] {
-        let mut s = seed;
-        let mut next = || {
-            s = s
-                .wrapping_mul(6364136223846793005)
-                .wrapping_add(1442695040888963407);
-            ((s >> 33) as f64 / (1u64 << 31) as f64) * 2.0 - 1.0
-        };
-        let pts = (0..(n + 1) * (m + 1))
-            .map(|_| Vector3::new(next(), next(), next()))
-            .collect();
-        let x = BezierSurface::from_flat(n, m, pts).unwrap();
+        let x = random_surface(n, m, seed);
         let problem = Problem {
             operator: Operator::second_order(1.0, 1.0).unwrap(),
             rhs: None,
@@ -151,56 +161,19 @@ fn biharmonic_extremal(boundary: &BezierSurface<3>) -> BezierSurface<3> {
     let (a_n, a_m) = (derivative_gram(n, 0, 0), derivative_gram(m, 0, 0));
     let (k_n, k_m) = (derivative_gram(n, 2, 2), derivative_gram(m, 2, 2));
     let (x_n, x_m) = (derivative_gram(n, 2, 0), derivative_gram(m, 2, 0));
-    let idx = |i: usize, j: usize| i * (m + 1) + j;
-    let interior: Vec<(usize, usize)> = (2..n - 1)
-        .flat_map(|i| (2..m - 1).map(move |j| (i, j)))
-        .collect();
-    let pos = |i: usize, j: usize| interior.iter().position(|&p| p == (i, j));
-    let size = interior.len();
-    let mut a = DMatrix::<f64>::zeros(size, size);
-    let mut b = DMatrix::<f64>::zeros(size, 3);
-    for (r, &(i, j)) in interior.iter().enumerate() {
-        for k in 0..=n {
-            for l in 0..=m {
-                // ∂/∂a_ij of ∫ (Σ a_kl (B_k'' B_l + B_k B_l''))².
-                let w = k_n[(i, k)] * a_m[(j, l)]
-                    + a_n[(i, k)] * k_m[(j, l)]
-                    + x_n[(i, k)] * x_m[(l, j)]
-                    + x_n[(k, i)] * x_m[(j, l)];
-                match pos(k, l) {
-                    Some(c) => a[(r, c)] += w,
-                    None => {
-                        let p = boundary.points()[idx(k, l)];
-                        for d in 0..3 {
-                            b[(r, d)] -= w * p[d];
-                        }
-                    }
-                }
-            }
-        }
-    }
-    let x = a.lu().solve(&b).unwrap();
-    let mut pts = boundary.points().to_vec();
-    for (r, &(i, j)) in interior.iter().enumerate() {
-        pts[idx(i, j)] = Vector3::new(x[(r, 0)], x[(r, 1)], x[(r, 2)]);
-    }
-    BezierSurface::from_flat(n, m, pts).unwrap()
+    // ∂/∂a_ij of ∫ (Σ a_kl (B_k'' B_l + B_k B_l''))².
+    extremal(boundary, 2, |i, j, k, l| {
+        k_n[(i, k)] * a_m[(j, l)]
+            + a_n[(i, k)] * k_m[(j, l)]
+            + x_n[(i, k)] * x_m[(l, j)]
+            + x_n[(k, i)] * x_m[(j, l)]
+    })
 }
 
 #[test]
 fn galerkin_biharmonic_is_the_biharmonic_extremal() {
     for (n, m, seed) in [(5usize, 5usize, 7u64), (6, 5, 8), (7, 6, 9)] {
-        let mut s = seed;
-        let mut next = || {
-            s = s
-                .wrapping_mul(6364136223846793005)
-                .wrapping_add(1442695040888963407);
-            ((s >> 33) as f64 / (1u64 << 31) as f64) * 2.0 - 1.0
-        };
-        let pts = (0..(n + 1) * (m + 1))
-            .map(|_| Vector3::new(next(), next(), next()))
-            .collect();
-        let x = BezierSurface::from_flat(n, m, pts).unwrap();
+        let x = random_surface(n, m, seed);
         let problem = Problem {
             operator: Operator::bloor_wilson(1.0).unwrap(),
             rhs: None,

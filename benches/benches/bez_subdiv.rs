@@ -3,7 +3,7 @@
 
 use std::hint::black_box;
 
-use bez_subdiv::{FlattenOptions, SplitRule, flatten};
+use bez_subdiv::{FlattenOptions, SplitRule, flatten, flatten_fixed_into};
 use bezkit_benches::random_curve;
 use criterion::{BenchmarkId, Criterion, criterion_group, criterion_main};
 
@@ -50,6 +50,12 @@ fn versus_kurbo(c: &mut Criterion) {
     let mut g = c.benchmark_group("cubic_flatten_vs_kurbo");
     g.bench_function("bezkit fixed rule", |b| {
         b.iter(|| flatten(black_box(&curve), &options));
+    });
+    let mut polyline = Vec::new();
+    g.bench_function("bezkit fixed rule, flatten_fixed_into", |b| {
+        b.iter(|| {
+            flatten_fixed_into(black_box(&curve), 1e-5, 40, &mut polyline).map(|s| s.pieces)
+        });
     });
     g.bench_function("kurbo flatten", |b| {
         b.iter(|| {

@@ -65,30 +65,30 @@ pub fn flatten_fixed_into(
     }
 }
 
-/// The pending pieces of a depth-first subdivision, the next piece on top.
+/// The pending pieces of a depth-first subdivision with their levels, the next piece on top.
 trait PieceStack {
-    /// The control polygon of the top piece.
-    fn top(&self) -> &[Vector2<f64>];
+    /// The control polygon and level of the top piece, `None` when the stack is empty.
+    fn top(&self) -> Option<(&[Vector2<f64>], usize)>;
     /// Removes the top piece.
     fn pop(&mut self);
-    /// Replaces the top piece by its halves, the left half on top.
+    /// Replaces the top piece by its halves one level deeper, the left half on top.
     fn halve_top(&mut self) -> Result<(), SubdivError>;
 }
 
-/// Pieces of N control points, one array each.
-struct ArrayStack<const N: usize>(Vec<[Vector2<f64>; N]>);
+/// Pieces of N control points, one array each, with their levels.
+struct ArrayStack<const N: usize>(Vec<([Vector2<f64>; N], usize)>);
 
 impl<const N: usize> ArrayStack<N> {
     fn new(points: [Vector2<f64>; N]) -> Self {
         let mut pieces = Vec::with_capacity(64);
-        pieces.push(points);
+        pieces.push((points, 0));
         Self(pieces)
     }
 }
 
 impl<const N: usize> PieceStack for ArrayStack<N> {
-    fn top(&self) -> &[Vector2<f64>] {
-        self.0.last().map_or(&[], |p| p.as_slice())
+    fn top(&self) -> Option<(&[Vector2<f64>], usize)> {
+        self.0.last().map(|(p, depth)| (p.as_slice(), *depth))
     }
 
     fn pop(&mut self) {
@@ -96,20 +96,23 @@ impl<const N: usize> PieceStack for ArrayStack<N> {
     }
 
     fn halve_top(&mut self) -> Result<(), SubdivError> {
-        let Some(top) = self.0.last_mut() else {
+        let Some((top, depth)) = self.0.last_mut() else {
             return Ok(());
         };
         let (left, right) = de_casteljau_split_array(*top, 0.5);
         *top = right;
-        self.0.push(left);
+        *depth += 1;
+        let depth = *depth;
+        self.0.push((left, depth));
         Ok(())
     }
 }
 
-/// Pieces of n control points, piece k at `buffer[k n .. (k + 1) n]`.
+/// Pieces of n control points, piece k at `buffer[k n .. (k + 1) n]` and level `depths[k]`.
 struct FlatStack {
     n: usize,
     buffer: Vec<Vector2<f64>>,
+    depths: Vec<usize>,
     parent: Vec<Vector2<f64>>,
 }
 
@@ -117,26 +120,37 @@ impl FlatStack {
     fn new(points: &[Vector2<f64>]) -> Self {
         let mut buffer = Vec::with_capacity(points.len() * 64);
         buffer.extend_from_slice(points);
+        let mut depths = Vec::with_capacity(64);
+        depths.push(0);
         Self {
             n: points.len(),
             buffer,
+            depths,
             parent: points.to_vec(),
         }
     }
 }
 
 impl PieceStack for FlatStack {
-    fn top(&self) -> &[Vector2<f64>] {
+    fn top(&self) -> Option<(&[Vector2<f64>], usize)> {
+        let depth = *self.depths.last()?;
         let start = self.buffer.len().saturating_sub(self.n);
-        &self.buffer[start..]
+        Some((&self.buffer[start..], depth))
     }
 
     fn pop(&mut self) {
         self.buffer
             .truncate(self.buffer.len().saturating_sub(self.n));
+        self.depths.pop();
     }
 
     fn halve_top(&mut self) -> Result<(), SubdivError> {
+        let Some(depth) = self.depths.last_mut() else {
+            return Ok(());
+        };
+        *depth += 1;
+        let depth = *depth;
+        self.depths.push(depth);
         let start = self.buffer.len().saturating_sub(self.n);
         self.parent.copy_from_slice(&self.buffer[start..]);
         self.buffer.resize(start + 2 * self.n, Vector2::zeros());
@@ -157,16 +171,19 @@ fn subdivide<S: PieceStack>(
     let size = curve_size(curve);
     let limit = tolerance * size;
     let mut stats = FlattenStats::default();
-    // The levels of the pending pieces, in stack order.
-    let mut depths: Vec<usize> = Vec::with_capacity(64);
-    depths.push(0);
-    while let Some(depth) = depths.pop() {
-        let piece = stack.top();
-        if size == 0.0 || within_chord_line(piece, limit) {
+    if size == 0.0 {
+        // All control points coincide: one piece, as in the general path.
+        polyline.extend_from_slice(curve.points());
+        stats.pieces = 1;
+        return Ok(stats);
+    }
+    // Every piece starts where the previous one ended (the first at B(0) = P₀, exactly).
+    polyline.push(curve.start());
+    while let Some((piece, depth)) = stack.top() {
+        if within_chord_line(piece, limit) {
             stats.depth = stats.depth.max(depth);
             stats.pieces += 1;
-            let skip = usize::from(!polyline.is_empty());
-            polyline.extend_from_slice(&piece[skip..]);
+            polyline.extend_from_slice(piece.get(1..).unwrap_or_default());
             stack.pop();
             continue;
         }
@@ -175,8 +192,6 @@ fn subdivide<S: PieceStack>(
         }
         stats.splits += 1;
         stack.halve_top()?;
-        depths.push(depth + 1);
-        depths.push(depth + 1);
     }
     Ok(stats)
 }

@@ -1,11 +1,12 @@
-//! bez-subdiv: flattening with each split rule; cubics beside kurbo's `flatten`.
+//! bez-subdiv: flattening with each split rule; cubics beside kurbo's and lyon_geom's flattening;
+//! degree 25 per output point.
 #![allow(missing_docs, reason = "criterion macros generate undocumented items")]
 
 use std::hint::black_box;
 
-use bez_subdiv::{FlattenOptions, SplitRule, flatten};
+use bez_subdiv::{FlattenOptions, SplitRule, flatten, flatten_fixed_into};
 use bezkit_benches::random_curve;
-use criterion::{BenchmarkId, Criterion, criterion_group, criterion_main};
+use criterion::{BenchmarkId, Criterion, Throughput, criterion_group, criterion_main};
 
 fn rules(c: &mut Criterion) {
     for (name, rule) in [
@@ -28,35 +29,100 @@ fn rules(c: &mut Criterion) {
     }
 }
 
-/// The same cubic at the same absolute tolerance: ours (eq. (3), ε relative to the curve size)
-/// and kurbo's `flatten` (its tolerance is an absolute distance).
-fn versus_kurbo(c: &mut Criterion) {
-    use kurbo::{BezPath, CubicBez, PathEl};
-    let curve = random_curve::<2>(3, 103);
-    let p = curve.points();
-    let size = bez_subdiv::curve_size(&curve);
-    let tol = 1e-5 * size;
-    let cubic = CubicBez::new(
-        (p[0].x, p[0].y),
-        (p[1].x, p[1].y),
-        (p[2].x, p[2].y),
-        (p[3].x, p[3].y),
-    );
-    let path = BezPath::from_vec(vec![
-        PathEl::MoveTo(cubic.p0),
-        PathEl::CurveTo(cubic.p1, cubic.p2, cubic.p3),
-    ]);
+/// The peer cubics at the same absolute tolerance (1e-5 × curve size): ours (eq. (3), fixed
+/// rule, general and allocation-free path), kurbo's `flatten` and lyon_geom's
+/// `for_each_flattened`. Throughput: output segments of each method.
+fn versus_peers(c: &mut Criterion) {
+    use kurbo::{BezPath, PathEl};
+    use lyon_geom::{CubicBezierSegment, point};
     let options = FlattenOptions::default();
-    let mut g = c.benchmark_group("cubic_flatten_vs_kurbo");
-    g.bench_function("bezkit fixed rule", |b| {
+    let mut g = c.benchmark_group("cubic_flatten_peers");
+    for (name, curve) in bez_subdiv::cases::peer_cubics() {
+        let p = curve.points();
+        let tol = 1e-5 * bez_subdiv::curve_size(&curve);
+        let path = BezPath::from_vec(vec![
+            PathEl::MoveTo((p[0].x, p[0].y).into()),
+            PathEl::CurveTo(
+                (p[1].x, p[1].y).into(),
+                (p[2].x, p[2].y).into(),
+                (p[3].x, p[3].y).into(),
+            ),
+        ]);
+        let lyon = CubicBezierSegment {
+            from: point(p[0].x, p[0].y),
+            ctrl1: point(p[1].x, p[1].y),
+            ctrl2: point(p[2].x, p[2].y),
+            to: point(p[3].x, p[3].y),
+        };
+        let Ok(ours) = flatten(&curve, &options) else {
+            continue;
+        };
+        let ours_segments = ours.polyline.len() as u64 - 1;
+        g.throughput(Throughput::Elements(ours_segments));
+        g.bench_function(BenchmarkId::new("bezkit flatten, fixed rule", &name), |b| {
+            b.iter(|| flatten(black_box(&curve), &options));
+        });
+        let mut polyline = Vec::new();
+        g.bench_function(BenchmarkId::new("bezkit flatten_fixed_into", &name), |b| {
+            b.iter(|| {
+                flatten_fixed_into(black_box(&curve), 1e-5, 40, &mut polyline).map(|s| s.pieces)
+            });
+        });
+        let mut kurbo_points = Vec::new();
+        kurbo::flatten(&path, tol, |el| kurbo_points.push(el));
+        g.throughput(Throughput::Elements(kurbo_points.len() as u64 - 1));
+        g.bench_function(BenchmarkId::new("kurbo flatten", &name), |b| {
+            b.iter(|| {
+                kurbo_points.clear();
+                kurbo::flatten(black_box(&path), tol, |el| kurbo_points.push(el));
+                kurbo_points.len()
+            });
+        });
+        let mut lyon_points = Vec::new();
+        lyon.for_each_flattened(tol, &mut |s| lyon_points.push(s.to));
+        g.throughput(Throughput::Elements(lyon_points.len() as u64));
+        g.bench_function(
+            BenchmarkId::new("lyon_geom for_each_flattened", &name),
+            |b| {
+                b.iter(|| {
+                    lyon_points.clear();
+                    black_box(&lyon).for_each_flattened(tol, &mut |s| lyon_points.push(s.to));
+                    lyon_points.len()
+                });
+            },
+        );
+    }
+    g.finish();
+}
+
+/// One degree-25 curve, each mode, throughput in output points (target: < 0.3 µs per point).
+fn degree_25_per_point(c: &mut Criterion) {
+    let curve = random_curve::<2>(25, 125);
+    let options = FlattenOptions::default();
+    let tol = options.tolerance * bez_subdiv::curve_size(&curve);
+    let mut g = c.benchmark_group("flatten_degree25_per_point");
+    let count = |r: Result<usize, bez_subdiv::SubdivError>| r.map_or(1, |k| k as u64);
+    g.throughput(Throughput::Elements(count(
+        flatten(&curve, &options).map(|f| f.polyline.len()),
+    )));
+    g.bench_function("fixed rule, flatten", |b| {
         b.iter(|| flatten(black_box(&curve), &options));
     });
-    g.bench_function("kurbo flatten", |b| {
-        b.iter(|| {
-            let mut count = 0usize;
-            kurbo::flatten(black_box(&path), tol, |_| count += 1);
-            count
-        });
+    let mut polyline = Vec::new();
+    g.bench_function("fixed rule, flatten_fixed_into", |b| {
+        b.iter(|| flatten_fixed_into(black_box(&curve), 1e-5, 40, &mut polyline).map(|s| s.pieces));
+    });
+    g.throughput(Throughput::Elements(count(
+        bez_subdiv::flatten_guaranteed(&curve, tol, 40).map(|p| p.len()),
+    )));
+    g.bench_function("guaranteed", |b| {
+        b.iter(|| bez_subdiv::flatten_guaranteed(black_box(&curve), tol, 40));
+    });
+    g.throughput(Throughput::Elements(count(
+        bez_subdiv::flatten_near_optimal(&curve, tol, 40).map(|p| p.len()),
+    )));
+    g.bench_function("near-optimal", |b| {
+        b.iter(|| bez_subdiv::flatten_near_optimal(black_box(&curve), tol, 40));
     });
     g.finish();
 }
@@ -80,5 +146,5 @@ fn batch(c: &mut Criterion) {
     g.finish();
 }
 
-criterion_group!(benches, rules, versus_kurbo, batch);
+criterion_group!(benches, rules, versus_peers, degree_25_per_point, batch);
 criterion_main!(benches);

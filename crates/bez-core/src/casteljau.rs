@@ -116,6 +116,29 @@ pub fn de_casteljau_split<T: ControlPoint>(
     Ok(())
 }
 
+/// [`de_casteljau_split`] of a control polygon of fixed size `N`, by value: `(left, right)`.
+///
+/// The same recurrence Pᵢʳ = (1 − t) Pᵢʳ⁻¹ + t Pᵢ₊₁ʳ⁻¹ in the same order, so the result equals
+/// `de_casteljau_split`'s bit for bit; with `N` known at compile time the loops unroll and the
+/// pieces can stay in registers (hot loops on cubics).
+#[must_use]
+#[inline]
+pub fn de_casteljau_split_array<T: ControlPoint, const N: usize>(
+    points: [T; N],
+    t: f64,
+) -> ([T; N], [T; N]) {
+    let mut left = points;
+    let mut right = points;
+    let s = 1.0 - t;
+    for (r, l) in left.iter_mut().enumerate().skip(1) {
+        for i in 0..N - r {
+            right[i] = right[i] * s + right[i + 1] * t;
+        }
+        *l = right[0];
+    }
+    (left, right)
+}
+
 /// Control points of the same polynomial written in degree n + r.
 ///
 /// One step: Qᵢ = i/(n+1) Pᵢ₋₁ + (1 − i/(n+1)) Pᵢ, a convex combination, repeated r times
@@ -257,6 +280,17 @@ mod tests {
         assert_eq!(l[4], de_casteljau(&p, 0.3).unwrap());
         assert_eq!(l[0], p[0]);
         assert_eq!(r[4], p[4]);
+    }
+
+    #[test]
+    fn split_array_equals_split_bit_for_bit() {
+        let p = [0.1, 3.7, -1.3, 2.9, 5.3, -0.7];
+        for t in [0.0, 0.3, 0.5, 0.77, 1.0] {
+            let (mut l, mut r) = ([0.0; 6], [0.0; 6]);
+            de_casteljau_split(&p, t, &mut l, &mut r).unwrap();
+            assert_eq!(de_casteljau_split_array(p, t), (l, r));
+        }
+        assert_eq!(de_casteljau_split_array([2.5], 0.5), ([2.5], [2.5]));
     }
 
     #[test]

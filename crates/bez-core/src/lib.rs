@@ -66,7 +66,7 @@ pub use crate::bernstein::{
 };
 pub use crate::casteljau::{
     ControlPoint, HornerBernstein, compensated_de_casteljau, de_casteljau, de_casteljau_in_place,
-    de_casteljau_split, elevate_slice, hodograph_slice, lerp,
+    de_casteljau_split, de_casteljau_split_array, elevate_slice, hodograph_slice, lerp,
 };
 pub use crate::curve::BezierCurve;
 pub use crate::error::CoreError;

@@ -42,3 +42,32 @@ pub fn table1_curves() -> Vec<(usize, Vec<BezierCurve<2>>)> {
         })
         .collect()
 }
+
+/// Seed of the random cubics of [`peer_cubics`].
+pub const PEER_SEED: u64 = 2011;
+
+/// The cubics flattened side by side with other libraries (benchmarks and the peer table):
+/// three seeded random cubics (control points uniform in [0, 1]², seed [`PEER_SEED`]), a cusp
+/// and a loop, with their names.
+#[must_use]
+pub fn peer_cubics() -> Vec<(String, BezierCurve<2>)> {
+    let mut out: Vec<(String, BezierCurve<2>)> = random_curves(3, 3, PEER_SEED)
+        .into_iter()
+        .enumerate()
+        .map(|(k, c)| (format!("random cubic {}", k + 1), c))
+        .collect();
+    let v = Vector2::new;
+    let named = [
+        ("cusp", [v(0.0, 0.0), v(1.0, 1.0), v(0.0, 1.0), v(1.0, 0.0)]),
+        (
+            "loop",
+            [v(0.0, 0.0), v(2.0, 2.0), v(-1.0, 2.0), v(1.0, 0.0)],
+        ),
+    ];
+    for (name, points) in named {
+        if let Ok(c) = BezierCurve::new(points.to_vec()) {
+            out.push((name.into(), c));
+        }
+    }
+    out
+}

@@ -31,6 +31,7 @@ mod batch;
 mod bound;
 pub mod cases;
 mod error;
+mod fixed;
 mod flatten;
 mod guaranteed;
 mod measure;
@@ -40,6 +41,7 @@ mod split_rule;
 pub use crate::batch::flatten_batch;
 pub use crate::bound::{max_second_difference, wang_depth};
 pub use crate::error::SubdivError;
+pub use crate::fixed::flatten_fixed_into;
 pub use crate::flatten::{
     DEFAULT_MAX_DEPTH, DEFAULT_TOLERANCE, FlattenOptions, FlattenStats, Flattening, Piece,
     curve_size, flatten,

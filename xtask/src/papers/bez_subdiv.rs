@@ -186,7 +186,10 @@ pub(crate) fn tables() -> Result<Vec<Table>, DynError> {
 
 /// Max distance both ways between a curve and a polyline: dense curve samples to the polyline,
 /// polyline samples to the curve (exact nearest points).
-fn hausdorff(c: &BezierCurve<2>, poly: &[bez_core::Vector2<f64>]) -> Result<f64, DynError> {
+pub(super) fn hausdorff(
+    c: &BezierCurve<2>,
+    poly: &[bez_core::Vector2<f64>],
+) -> Result<f64, DynError> {
     let mut h = 0.0_f64;
     for p in c.sample_uniform(20_001) {
         let d = poly

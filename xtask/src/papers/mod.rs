@@ -7,6 +7,7 @@ use std::path::{Path, PathBuf};
 
 mod bez_core;
 mod bez_subdiv;
+mod bez_subdiv_peers;
 mod class_a;
 mod lambda_bezier;
 mod pde_bezier;
@@ -39,7 +40,8 @@ const PAPERS: &[Paper] = &[
     },
     Paper {
         name: "bez-subdiv",
-        tables: Some(bez_subdiv::tables),
+        // Table 1, the N* table, then the comparison with kurbo and lyon_geom.
+        tables: Some(bez_subdiv_peers::tables),
         figures: None,
     },
     Paper {

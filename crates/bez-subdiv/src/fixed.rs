@@ -1,0 +1,197 @@
+//! The fixed rule (t = ½) without per-piece allocation: the fast path of [`flatten`].
+//!
+//! [`flatten`]: crate::flatten()
+
+use bez_core::{BezierCurve, Vector2, de_casteljau_split, de_casteljau_split_array};
+
+use crate::error::SubdivError;
+use crate::flatten::{FlattenStats, curve_size, validate};
+use crate::measure::within_chord_line;
+
+/// The polyline of [`flatten`](crate::flatten()) with [`SplitRule::Fixed`](crate::SplitRule),
+/// written into `polyline` (cleared first, its capacity reused), and the run's counts.
+///
+/// The same algorithm as the general path, step for step: a piece stops when eq. (3) holds,
+/// max_{i=1..n−1} D(P₀Pₙ, Pᵢ) ≤ ε · max(x extent, y extent) of the original control points, and
+/// is otherwise halved by de Casteljau at t = ½, left piece first. The output equals
+/// `flatten(curve, &FlattenOptions { rule: SplitRule::Fixed, .. })`'s polyline and counts bit for
+/// bit; what differs is the storage: pending pieces live in one flat buffer used as a stack (at
+/// most `max_depth` + 1 pieces), final pieces go straight into the polyline, and nothing is
+/// allocated per piece. Piece parameter ranges are not recorded.
+///
+/// # Errors
+/// As [`flatten`](crate::flatten()): [`SubdivError::TooFewPoints`],
+/// [`SubdivError::InvalidTolerance`], [`SubdivError::DepthLimit`].
+pub fn flatten_fixed_into(
+    curve: &BezierCurve<2>,
+    tolerance: f64,
+    max_depth: usize,
+    polyline: &mut Vec<Vector2<f64>>,
+) -> Result<FlattenStats, SubdivError> {
+    validate(curve, tolerance)?;
+    polyline.clear();
+    let points = curve.points();
+    // Lines, quadratics and cubics on fixed-size arrays (the loops unroll, the pieces stay in
+    // registers); other degrees on one flat buffer.
+    match points {
+        [a, b] => subdivide(
+            curve,
+            ArrayStack::new([*a, *b]),
+            tolerance,
+            max_depth,
+            polyline,
+        ),
+        [a, b, c] => subdivide(
+            curve,
+            ArrayStack::new([*a, *b, *c]),
+            tolerance,
+            max_depth,
+            polyline,
+        ),
+        [a, b, c, d] => subdivide(
+            curve,
+            ArrayStack::new([*a, *b, *c, *d]),
+            tolerance,
+            max_depth,
+            polyline,
+        ),
+        _ => subdivide(
+            curve,
+            FlatStack::new(points),
+            tolerance,
+            max_depth,
+            polyline,
+        ),
+    }
+}
+
+/// The pending pieces of a depth-first subdivision with their levels, the next piece on top.
+trait PieceStack {
+    /// The control polygon and level of the top piece, `None` when the stack is empty.
+    fn top(&self) -> Option<(&[Vector2<f64>], usize)>;
+    /// Removes the top piece.
+    fn pop(&mut self);
+    /// Replaces the top piece by its halves one level deeper, the left half on top.
+    fn halve_top(&mut self) -> Result<(), SubdivError>;
+}
+
+/// Pieces of N control points, one array each, with their levels.
+struct ArrayStack<const N: usize>(Vec<([Vector2<f64>; N], usize)>);
+
+impl<const N: usize> ArrayStack<N> {
+    fn new(points: [Vector2<f64>; N]) -> Self {
+        let mut pieces = Vec::with_capacity(64);
+        pieces.push((points, 0));
+        Self(pieces)
+    }
+}
+
+impl<const N: usize> PieceStack for ArrayStack<N> {
+    fn top(&self) -> Option<(&[Vector2<f64>], usize)> {
+        self.0.last().map(|(p, depth)| (p.as_slice(), *depth))
+    }
+
+    fn pop(&mut self) {
+        self.0.pop();
+    }
+
+    fn halve_top(&mut self) -> Result<(), SubdivError> {
+        let Some((top, depth)) = self.0.last_mut() else {
+            return Ok(());
+        };
+        let (left, right) = de_casteljau_split_array(*top, 0.5);
+        *top = right;
+        *depth += 1;
+        let depth = *depth;
+        self.0.push((left, depth));
+        Ok(())
+    }
+}
+
+/// Pieces of n control points, piece k at `buffer[k n .. (k + 1) n]` and level `depths[k]`.
+struct FlatStack {
+    n: usize,
+    buffer: Vec<Vector2<f64>>,
+    depths: Vec<usize>,
+    parent: Vec<Vector2<f64>>,
+}
+
+impl FlatStack {
+    fn new(points: &[Vector2<f64>]) -> Self {
+        let mut buffer = Vec::with_capacity(points.len() * 64);
+        buffer.extend_from_slice(points);
+        let mut depths = Vec::with_capacity(64);
+        depths.push(0);
+        Self {
+            n: points.len(),
+            buffer,
+            depths,
+            parent: points.to_vec(),
+        }
+    }
+}
+
+impl PieceStack for FlatStack {
+    fn top(&self) -> Option<(&[Vector2<f64>], usize)> {
+        let depth = *self.depths.last()?;
+        let start = self.buffer.len().saturating_sub(self.n);
+        Some((&self.buffer[start..], depth))
+    }
+
+    fn pop(&mut self) {
+        self.buffer
+            .truncate(self.buffer.len().saturating_sub(self.n));
+        self.depths.pop();
+    }
+
+    fn halve_top(&mut self) -> Result<(), SubdivError> {
+        let Some(depth) = self.depths.last_mut() else {
+            return Ok(());
+        };
+        *depth += 1;
+        let depth = *depth;
+        self.depths.push(depth);
+        let start = self.buffer.len().saturating_sub(self.n);
+        self.parent.copy_from_slice(&self.buffer[start..]);
+        self.buffer.resize(start + 2 * self.n, Vector2::zeros());
+        let (right, left) = self.buffer[start..].split_at_mut(self.n);
+        de_casteljau_split(&self.parent, 0.5, left, right)?;
+        Ok(())
+    }
+}
+
+/// The subdivision loop of [`flatten_fixed_into`], `stack` holding the whole curve.
+fn subdivide<S: PieceStack>(
+    curve: &BezierCurve<2>,
+    mut stack: S,
+    tolerance: f64,
+    max_depth: usize,
+    polyline: &mut Vec<Vector2<f64>>,
+) -> Result<FlattenStats, SubdivError> {
+    let size = curve_size(curve);
+    let limit = tolerance * size;
+    let mut stats = FlattenStats::default();
+    if size == 0.0 {
+        // All control points coincide: one piece, as in the general path.
+        polyline.extend_from_slice(curve.points());
+        stats.pieces = 1;
+        return Ok(stats);
+    }
+    // Every piece starts where the previous one ended (the first at B(0) = P₀, exactly).
+    polyline.push(curve.start());
+    while let Some((piece, depth)) = stack.top() {
+        if within_chord_line(piece, limit) {
+            stats.depth = stats.depth.max(depth);
+            stats.pieces += 1;
+            polyline.extend_from_slice(piece.get(1..).unwrap_or_default());
+            stack.pop();
+            continue;
+        }
+        if depth >= max_depth {
+            return Err(SubdivError::DepthLimit { limit: max_depth });
+        }
+        stats.splits += 1;
+        stack.halve_top()?;
+    }
+    Ok(stats)
+}

@@ -30,38 +30,53 @@ pub fn flatten_fixed_into(
 ) -> Result<FlattenStats, SubdivError> {
     validate(curve, tolerance)?;
     polyline.clear();
-    let points = curve.points();
-    // Lines, quadratics and cubics on fixed-size arrays (the loops unroll, the pieces stay in
-    // registers); other degrees on one flat buffer.
+    let size = curve_size(curve);
+    let mut stats = FlattenStats::default();
+    if size == 0.0 {
+        // All control points coincide: one piece, as in the general path.
+        polyline.extend_from_slice(curve.points());
+        stats.pieces = 1;
+        return Ok(stats);
+    }
+    let limit = tolerance * size;
+    // Every piece starts where the previous one ended (the first at B(0) = P₀, exactly).
+    polyline.push(curve.start());
+    let (mut depth, mut pieces) = (0, 0);
+    stats.splits = halve_until(
+        curve.points(),
+        max_depth,
+        |piece| within_chord_line(piece, limit),
+        |piece, level| {
+            depth = depth.max(level);
+            pieces += 1;
+            polyline.extend_from_slice(piece.get(1..).unwrap_or_default());
+        },
+    )?;
+    stats.depth = depth;
+    stats.pieces = pieces;
+    Ok(stats)
+}
+
+/// Depth-first halving at t = ½ of the control polygon `points`, left piece first, until
+/// `accept` holds for a piece; `emit` receives each accepted piece and its level, in parameter
+/// order. Returns the number of halvings.
+///
+/// Lines, quadratics and cubics are halved on fixed-size arrays (the loops unroll, the pieces
+/// stay in registers), other degrees on one flat buffer; nothing is allocated per piece.
+///
+/// # Errors
+/// [`SubdivError::DepthLimit`] when a piece is not accepted at level `max_depth`.
+pub(crate) fn halve_until(
+    points: &[Vector2<f64>],
+    max_depth: usize,
+    accept: impl FnMut(&[Vector2<f64>]) -> bool,
+    emit: impl FnMut(&[Vector2<f64>], usize),
+) -> Result<usize, SubdivError> {
     match points {
-        [a, b] => subdivide(
-            curve,
-            ArrayStack::new([*a, *b]),
-            tolerance,
-            max_depth,
-            polyline,
-        ),
-        [a, b, c] => subdivide(
-            curve,
-            ArrayStack::new([*a, *b, *c]),
-            tolerance,
-            max_depth,
-            polyline,
-        ),
-        [a, b, c, d] => subdivide(
-            curve,
-            ArrayStack::new([*a, *b, *c, *d]),
-            tolerance,
-            max_depth,
-            polyline,
-        ),
-        _ => subdivide(
-            curve,
-            FlatStack::new(points),
-            tolerance,
-            max_depth,
-            polyline,
-        ),
+        [a, b] => run(ArrayStack::new([*a, *b]), max_depth, accept, emit),
+        [a, b, c] => run(ArrayStack::new([*a, *b, *c]), max_depth, accept, emit),
+        [a, b, c, d] => run(ArrayStack::new([*a, *b, *c, *d]), max_depth, accept, emit),
+        _ => run(FlatStack::new(points), max_depth, accept, emit),
     }
 }
 
@@ -160,38 +175,25 @@ impl PieceStack for FlatStack {
     }
 }
 
-/// The subdivision loop of [`flatten_fixed_into`], `stack` holding the whole curve.
-fn subdivide<S: PieceStack>(
-    curve: &BezierCurve<2>,
+/// The loop of [`halve_until`] on a stack holding the whole curve.
+fn run<S: PieceStack>(
     mut stack: S,
-    tolerance: f64,
     max_depth: usize,
-    polyline: &mut Vec<Vector2<f64>>,
-) -> Result<FlattenStats, SubdivError> {
-    let size = curve_size(curve);
-    let limit = tolerance * size;
-    let mut stats = FlattenStats::default();
-    if size == 0.0 {
-        // All control points coincide: one piece, as in the general path.
-        polyline.extend_from_slice(curve.points());
-        stats.pieces = 1;
-        return Ok(stats);
-    }
-    // Every piece starts where the previous one ended (the first at B(0) = P₀, exactly).
-    polyline.push(curve.start());
+    mut accept: impl FnMut(&[Vector2<f64>]) -> bool,
+    mut emit: impl FnMut(&[Vector2<f64>], usize),
+) -> Result<usize, SubdivError> {
+    let mut splits = 0;
     while let Some((piece, depth)) = stack.top() {
-        if within_chord_line(piece, limit) {
-            stats.depth = stats.depth.max(depth);
-            stats.pieces += 1;
-            polyline.extend_from_slice(piece.get(1..).unwrap_or_default());
+        if accept(piece) {
+            emit(piece, depth);
             stack.pop();
             continue;
         }
         if depth >= max_depth {
             return Err(SubdivError::DepthLimit { limit: max_depth });
         }
-        stats.splits += 1;
+        splits += 1;
         stack.halve_top()?;
     }
-    Ok(stats)
+    Ok(splits)
 }

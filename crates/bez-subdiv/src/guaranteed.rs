@@ -1,8 +1,9 @@
 //! Beyond the paper: flattening with a guaranteed Hausdorff bound.
 
-use bez_core::{BezierCurve, Vector2, de_casteljau_split};
+use bez_core::{BezierCurve, Vector2};
 
 use crate::error::SubdivError;
+use crate::fixed::halve_until;
 
 /// A point of a flattening: a point of the curve and its parameter.
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -35,6 +36,7 @@ pub fn distance_to_segment(p: &Vector2<f64>, a: &Vector2<f64>, b: &Vector2<f64>)
 /// segment's end points continuously, its projection covers the segment, so every segment point
 /// is within `tolerance` of the piece too. Both directions of the Hausdorff distance are bounded,
 /// at cusps and loops as well. The points are exact curve points (de Casteljau end points).
+/// Halving runs without per-piece allocation (as [`flatten_fixed_into`](crate::flatten_fixed_into)).
 ///
 /// # Errors
 /// [`SubdivError::TooFewPoints`] for a degree-0 curve, [`SubdivError::InvalidTolerance`],
@@ -56,25 +58,28 @@ pub fn flatten_guaranteed(
         t: 0.0,
         point: curve.start(),
     }];
-    let mut stack = vec![(curve.points().to_vec(), 0usize, 0.0_f64, 1.0_f64)];
-    while let Some((points, depth, t0, t1)) = stack.pop() {
-        let (a, b) = (points[0], points[n - 1]);
-        let ok = points[1..n - 1]
-            .iter()
-            .all(|p| distance_to_segment(p, &a, &b) <= tolerance);
-        if ok {
-            out.push(FlatPoint { t: t1, point: b });
-            continue;
-        }
-        if depth >= max_depth {
-            return Err(SubdivError::DepthLimit { limit: max_depth });
-        }
-        let mut left = vec![Vector2::zeros(); n];
-        let mut right = vec![Vector2::zeros(); n];
-        de_casteljau_split(&points, 0.5, &mut left, &mut right)?;
-        let tm = 0.5 * (t0 + t1);
-        stack.push((right, depth + 1, tm, t1));
-        stack.push((left, depth + 1, t0, tm));
+    // A piece at level d spans 2⁻ᵈ of the parameter range; pieces come in parameter order.
+    let mut t = 0.0_f64;
+    halve_until(
+        curve.points(),
+        max_depth,
+        |piece| {
+            let (a, b) = (piece[0], piece[n - 1]);
+            piece[1..n - 1]
+                .iter()
+                .all(|p| distance_to_segment(p, &a, &b) <= tolerance)
+        },
+        |piece, depth| {
+            t += 0.5_f64.powi(i32::try_from(depth).unwrap_or(i32::MAX));
+            out.push(FlatPoint {
+                t,
+                point: piece[n - 1],
+            });
+        },
+    )?;
+    // The sum of the spans is 1 exactly up to level 53; pin the end for deeper runs.
+    if let Some(last) = out.last_mut() {
+        last.t = 1.0;
     }
     Ok(out)
 }
@@ -89,6 +94,37 @@ mod tests {
         assert_eq!(distance_to_segment(&Vector2::new(0.5, 2.0), &a, &b), 2.0);
         assert_eq!(distance_to_segment(&Vector2::new(4.0, 4.0), &a, &b), 5.0);
         assert_eq!(distance_to_segment(&Vector2::new(3.0, 4.0), &a, &a), 5.0);
+    }
+
+    #[test]
+    fn points_carry_their_parameters() {
+        for pts in [
+            vec![
+                Vector2::new(0.0, 0.0),
+                Vector2::new(1.0, 2.0),
+                Vector2::new(3.0, -1.0),
+            ],
+            vec![
+                Vector2::new(0.0, 0.0),
+                Vector2::new(2.0, 2.0),
+                Vector2::new(-1.0, 2.0),
+                Vector2::new(1.0, 0.0),
+            ],
+            (0..9)
+                .map(|i| Vector2::new(f64::from(i), f64::from(i * i % 5)))
+                .collect(),
+        ] {
+            let c = BezierCurve::new(pts).unwrap();
+            let flat = flatten_guaranteed(&c, 1e-3, 40).unwrap();
+            assert!(flat.len() > 2);
+            assert_eq!((flat[0].t, flat[flat.len() - 1].t), (0.0, 1.0));
+            for w in flat.windows(2) {
+                assert!(w[0].t < w[1].t);
+            }
+            for p in &flat {
+                assert!((c.eval(p.t).unwrap() - p.point).norm() < 1e-12);
+            }
+        }
     }
 
     #[test]

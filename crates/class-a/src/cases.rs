@@ -296,7 +296,7 @@ pub fn farin_counterexample_search(matrices: usize, seed: u64) -> Counterexample
                 continue;
             };
             if let Ok(cert) = crate::curvature_certificate(&c)
-                && let crate::Monotonicity::NotMonotone { extremum } = cert.verdict
+                && let crate::Monotonicity::NotMonotone { extremum, .. } = cert.verdict
             {
                 out.not_monotone += 1;
                 out.not_monotone_with_subcurve_4 += usize::from(r.subcurve_farin4.holds);

@@ -1,178 +1,129 @@
-//! Certificates of monotone curvature and torsion from the curve itself (Bernstein form).
+//! Proven certificates of monotone curvature and torsion, in exact integer arithmetic.
+//!
+//! Every f64 control point is a dyadic rational, so after scaling all coordinates by one power
+//! of two they are integers. The hodographs, the numerators of d(κ²)/dt and dτ/dt, and their
+//! Bernstein coefficients are then exact integers ([`ScaledBernstein`]); their signs are decided
+//! by exact subdivision (module `sign`). Nothing is rounded before the verdict.
 
-use bez_core::{
-    BezierCurve, SVector, bernstein_derivative_coeffs, bernstein_product, eval_bernstein_poly,
-    roots_in_unit_interval,
-};
+use bez_core::BezierCurve;
 
 use crate::ClassAError;
+use crate::exact::{ScaledBernstein, to_common_integers};
+use crate::sign::{Positivity, SignProfile, locate_sign_change, positivity, sign_profile};
 
-/// Largest degree of the curvature certificate (numerator degree 6n − 9 ≤ 120, exact binomials).
-pub const MAX_CURVATURE_DEGREE: usize = 21;
-/// Largest degree of the torsion certificate (numerator degree 7n − 13 ≤ 120).
-pub const MAX_TORSION_DEGREE: usize = 19;
-/// Coefficients within this fraction of the largest |coefficient| count as zero (rounding).
-pub const ROUNDING_ALLOWANCE: f64 = 1e-12;
+/// Why a certificate could not decide within the subdivision caps
+/// ([`crate::MAX_SUBDIVISION_DEPTH`], [`crate::MAX_PIECES`]).
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
+pub enum UndecidedCause {
+    /// Regularity (x' ≠ 0 for curvature, x' × x'' ≠ 0 for torsion) was neither proven nor refuted
+    /// (e.g. a zero at a non-dyadic parameter).
+    Regularity,
+    /// The sign of the derivative's numerator: a root too close to a double root or to an end.
+    Sign,
+}
 
 /// The verdict of a monotonicity certificate.
 #[derive(Debug, Clone, Copy, PartialEq)]
 #[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 pub enum Monotonicity {
-    /// Non-decreasing on [0, 1].
+    /// Non-decreasing on [0, 1] (proven).
     Increasing,
-    /// Non-increasing on [0, 1].
+    /// Non-increasing on [0, 1] (proven).
     Decreasing,
-    /// Constant (numerator identically zero up to rounding).
+    /// Constant (the numerator is identically zero, proven).
     Constant,
-    /// The derivative changes sign at the given interior parameter: an interior extremum.
+    /// The derivative is > 0 at one end of `bracket` and < 0 at the other (exact values at
+    /// dyadic points): an interior extremum lies strictly inside (proven).
     NotMonotone {
-        /// Parameter of the extremum.
+        /// Midpoint of the bracket.
         extremum: f64,
+        /// The bracket (its dyadic end points rounded to f64), usually of width ≤ 2⁻⁴⁰.
+        bracket: (f64, f64),
+    },
+    /// Not decided within the subdivision caps: no claim is made.
+    Undecided {
+        /// What was not decided.
+        cause: UndecidedCause,
+        /// The first unresolved parameter interval.
+        interval: (f64, f64),
     },
 }
 
-/// A monotonicity certificate: the Bernstein coefficients of the numerator N(t) of the
-/// derivative (the denominator is positive), and the verdict.
+/// A monotonicity certificate.
 #[derive(Debug, Clone, PartialEq)]
 #[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 pub struct Certificate {
     /// The verdict.
     pub verdict: Monotonicity,
-    /// Bernstein coefficients of N(t).
-    pub numerator: Vec<f64>,
-    /// The verdict follows from the signs of the coefficients alone (convex-hull property),
-    /// rather than from root isolation.
+    /// The numerator's Bernstein coefficients all have one sign (convex-hull property), so no
+    /// subdivision was needed.
     pub by_coefficient_signs: bool,
 }
 
 impl Certificate {
-    /// The quantity is monotone (increasing, decreasing or constant).
+    /// The quantity is proven monotone (increasing, decreasing or constant).
     #[must_use]
     pub fn is_monotone(&self) -> bool {
-        !matches!(self.verdict, Monotonicity::NotMonotone { .. })
+        matches!(
+            self.verdict,
+            Monotonicity::Increasing | Monotonicity::Decreasing | Monotonicity::Constant
+        )
     }
 }
 
-fn components<const D: usize>(points: &[SVector<f64, D>], k: usize) -> Vec<f64> {
-    points.iter().map(|p| p[k]).collect()
-}
-
-fn add(a: &[f64], b: &[f64], sb: f64) -> Vec<f64> {
-    a.iter().zip(b).map(|(x, y)| x + sb * y).collect()
-}
-
-/// Σ_k a_k b_k of vector-valued Bernstein polynomials given by components.
-fn dot(a: &[Vec<f64>], b: &[Vec<f64>]) -> Vec<f64> {
-    let mut acc: Vec<f64> = Vec::new();
-    for (x, y) in a.iter().zip(b) {
-        let p = bernstein_product(x, y);
-        acc = if acc.is_empty() {
-            p
-        } else {
-            add(&acc, &p, 1.0)
-        };
-    }
-    acc
-}
-
-/// Hodographs of order 1..=k of a normalized copy (translation and scale do not change signs).
-fn derivative_components<const D: usize>(curve: &BezierCurve<D>, k: usize) -> Vec<Vec<Vec<f64>>> {
+/// Exact hodographs of order 1..=k, in integers (coordinates scaled by a common power of two,
+/// which multiplies every numerator by a positive constant).
+fn hodographs<const D: usize>(
+    curve: &BezierCurve<D>,
+    k: usize,
+) -> Result<Vec<Vec<ScaledBernstein>>, ClassAError> {
     let pts = curve.points();
-    let scale = pts
-        .windows(2)
-        .map(|w| (w[1] - w[0]).amax())
-        .fold(0.0_f64, f64::max);
-    let scale = if scale > 0.0 { scale } else { 1.0 };
-    let mut cur: Vec<Vec<f64>> = (0..D)
-        .map(|d| components(pts, d).iter().map(|x| x / scale).collect())
+    let flat: Vec<f64> = (0..D).flat_map(|d| pts.iter().map(move |p| p[d])).collect();
+    let ints = to_common_integers(&flat).ok_or(ClassAError::NonFinite {
+        name: "control point",
+    })?;
+    let mut cur: Vec<ScaledBernstein> = ints
+        .chunks(pts.len())
+        .map(|c| ScaledBernstein::from_bernstein(c.to_vec()))
         .collect();
     let mut out = Vec::with_capacity(k);
     for _ in 0..k {
-        cur = cur.iter().map(|c| bernstein_derivative_coeffs(c)).collect();
+        cur = cur.iter().map(ScaledBernstein::derivative).collect();
         out.push(cur.clone());
     }
-    out
+    Ok(out)
 }
 
-fn decide(numerator: Vec<f64>) -> Certificate {
-    let scale = numerator.iter().fold(0.0_f64, |m, c| m.max(c.abs()));
-    let tol = ROUNDING_ALLOWANCE * scale;
-    if scale == 0.0 || numerator.iter().all(|c| c.abs() <= tol) {
-        return Certificate {
-            verdict: Monotonicity::Constant,
-            numerator,
-            by_coefficient_signs: true,
-        };
-    }
-    if numerator.iter().all(|&c| c >= -tol) {
-        return Certificate {
-            verdict: Monotonicity::Increasing,
-            numerator,
-            by_coefficient_signs: true,
-        };
-    }
-    if numerator.iter().all(|&c| c <= tol) {
-        return Certificate {
-            verdict: Monotonicity::Decreasing,
-            numerator,
-            by_coefficient_signs: true,
-        };
-    }
-    // Mixed signs: isolate the roots and look for a sign change of N.
-    let roots = roots_in_unit_interval(&numerator);
-    let mut cuts = vec![0.0];
-    cuts.extend(roots.iter().copied().filter(|r| *r > 0.0 && *r < 1.0));
-    cuts.push(1.0);
-    let mut signs = Vec::with_capacity(cuts.len());
-    for w in cuts.windows(2) {
-        let v = eval_bernstein_poly(&numerator, 0.5 * (w[0] + w[1]));
-        signs.push(if v > tol {
-            1
-        } else if v < -tol {
-            -1
-        } else {
-            0
-        });
-    }
-    let mut last = 0;
-    for (i, &sg) in signs.iter().enumerate() {
-        if sg != 0 {
-            if last != 0 && sg != last {
-                return Certificate {
-                    verdict: Monotonicity::NotMonotone { extremum: cuts[i] },
-                    numerator,
-                    by_coefficient_signs: false,
-                };
-            }
-            last = sg;
+/// Σ_d a_d b_d.
+fn dot(a: &[ScaledBernstein], b: &[ScaledBernstein]) -> ScaledBernstein {
+    a.iter()
+        .zip(b)
+        .map(|(x, y)| x.mul(y))
+        .reduce(|acc, p| acc.add_scaled(&p, 1))
+        .unwrap_or_else(|| ScaledBernstein::new(Vec::new()))
+}
+
+/// G = |x'|²|x''|² − (x'·x'')² = Σ_{i<j} (x'ᵢx''ⱼ − x'ⱼx''ᵢ)² (Lagrange's identity; |x' × x''|²
+/// in 3-D, (x' × x'')² in 2-D).
+fn gram(d1: &[ScaledBernstein], d2: &[ScaledBernstein]) -> ScaledBernstein {
+    let mut terms = Vec::new();
+    for i in 0..d1.len() {
+        for j in i + 1..d1.len() {
+            terms.push(d1[i].mul(&d2[j]).add_scaled(&d1[j].mul(&d2[i]), -1));
         }
     }
-    let verdict = match last {
-        1 => Monotonicity::Increasing,
-        -1 => Monotonicity::Decreasing,
-        _ => Monotonicity::Constant,
-    };
-    Certificate {
-        verdict,
-        numerator,
-        by_coefficient_signs: false,
-    }
+    dot(&terms, &terms)
 }
 
-/// Certificate of monotone curvature of a planar or spatial curve (any D).
-///
-/// κ² = G / P³ with P = |x'|² and G = |x'|²|x''|² − (x'·x'')² = |x' × x''|² (Lagrange), so
-/// d(κ²)/dt = N / P⁴ with N = G'P − 3GP', a polynomial of degree ≤ 6n − 9 computed exactly in
-/// Bernstein form (products of hodograph coefficients). All coefficients of one sign prove
-/// monotonicity (convex hull); otherwise the roots of N are isolated and a sign change reports
-/// an interior extremum. Coefficients within [`ROUNDING_ALLOWANCE`] of the largest count as zero.
-/// Points where x' = 0 (P = 0) are not excluded: the certificate assumes a regular curve.
+/// The exact numerator of d(κ²)/dt, N = G'P − 3GP' with P = |x'|², G = |x' × x''|²
+/// (κ² = G/P³, d(κ²)/dt = N/P⁴), degree 6n − 9, times a positive constant; and P.
 ///
 /// # Errors
-/// [`ClassAError::DegreeTooLow`] for n < 2, [`ClassAError::DegreeTooHigh`] for n > [`MAX_CURVATURE_DEGREE`].
-pub fn curvature_certificate<const D: usize>(
+/// [`ClassAError::DegreeTooLow`] for n < 2; [`ClassAError::NonFinite`] for a non-finite point.
+pub fn curvature_numerator<const D: usize>(
     curve: &BezierCurve<D>,
-) -> Result<Certificate, ClassAError> {
+) -> Result<(ScaledBernstein, ScaledBernstein), ClassAError> {
     let n = curve.degree();
     if n < 2 {
         return Err(ClassAError::DegreeTooLow {
@@ -180,54 +131,24 @@ pub fn curvature_certificate<const D: usize>(
             needed: 2,
         });
     }
-    if n > MAX_CURVATURE_DEGREE {
-        return Err(ClassAError::DegreeTooHigh {
-            degree: n,
-            max: MAX_CURVATURE_DEGREE,
-        });
-    }
-    let d = derivative_components(curve, 2);
-    let (d1, d2) = (&d[0], &d[1]);
-    let p = dot(d1, d1);
-    let g = add(
-        &bernstein_product(&p, &dot(d2, d2)),
-        &{
-            let q = dot(d1, d2);
-            bernstein_product(&q, &q)
-        },
-        -1.0,
-    );
-    let n_poly = add(
-        &bernstein_product(&bernstein_derivative_coeffs(&g), &p),
-        &bernstein_product(&g, &bernstein_derivative_coeffs(&p)),
-        -3.0,
-    );
-    Ok(decide(n_poly))
+    let d = hodographs(curve, 2)?;
+    let p = dot(&d[0], &d[0]);
+    let g = gram(&d[0], &d[1]);
+    let num = g
+        .derivative()
+        .mul(&p)
+        .add_scaled(&g.mul(&p.derivative()), -3);
+    Ok((num, p))
 }
 
-fn det3(a: &[Vec<f64>], b: &[Vec<f64>], c: &[Vec<f64>]) -> Vec<f64> {
-    let cross = |i: usize, j: usize| {
-        add(
-            &bernstein_product(&b[i], &c[j]),
-            &bernstein_product(&b[j], &c[i]),
-            -1.0,
-        )
-    };
-    let t0 = bernstein_product(&a[0], &cross(1, 2));
-    let t1 = bernstein_product(&a[1], &cross(2, 0));
-    let t2 = bernstein_product(&a[2], &cross(0, 1));
-    add(&add(&t0, &t1, 1.0), &t2, 1.0)
-}
-
-/// Certificate of monotone torsion of a spatial curve.
-///
-/// τ = Δ / G with Δ = det(x', x'', x''') and G = |x' × x''|², so dτ/dt = (Δ'G − ΔG') / G²:
-/// the numerator (degree ≤ 7n − 13) is decided as in [`curvature_certificate`].
-/// Where G = 0 (inflections) torsion is undefined; the certificate assumes G > 0.
+/// The exact numerator of dτ/dt, N = Δ'G − ΔG' with Δ = det(x', x'', x''') and G = |x' × x''|²
+/// (τ = Δ/G, dτ/dt = N/G²), degree 7n − 13, times a positive constant; and G.
 ///
 /// # Errors
-/// [`ClassAError::DegreeTooLow`] for n < 3, [`ClassAError::DegreeTooHigh`] for n > [`MAX_TORSION_DEGREE`].
-pub fn torsion_certificate(curve: &BezierCurve<3>) -> Result<Certificate, ClassAError> {
+/// [`ClassAError::DegreeTooLow`] for n < 3; [`ClassAError::NonFinite`] for a non-finite point.
+pub fn torsion_numerator(
+    curve: &BezierCurve<3>,
+) -> Result<(ScaledBernstein, ScaledBernstein), ClassAError> {
     let n = curve.degree();
     if n < 3 {
         return Err(ClassAError::DegreeTooLow {
@@ -235,30 +156,100 @@ pub fn torsion_certificate(curve: &BezierCurve<3>) -> Result<Certificate, ClassA
             needed: 3,
         });
     }
-    if n > MAX_TORSION_DEGREE {
-        return Err(ClassAError::DegreeTooHigh {
-            degree: n,
-            max: MAX_TORSION_DEGREE,
-        });
-    }
-    let d = derivative_components(curve, 3);
+    let d = hodographs(curve, 3)?;
     let (d1, d2, d3) = (&d[0], &d[1], &d[2]);
-    let cr: Vec<Vec<f64>> = (0..3)
+    let cross: Vec<ScaledBernstein> = (0..3)
         .map(|k| {
             let (i, j) = ((k + 1) % 3, (k + 2) % 3);
-            add(
-                &bernstein_product(&d1[i], &d2[j]),
-                &bernstein_product(&d1[j], &d2[i]),
-                -1.0,
-            )
+            d1[i].mul(&d2[j]).add_scaled(&d1[j].mul(&d2[i]), -1)
         })
         .collect();
-    let g = dot(&cr, &cr);
-    let delta = det3(d1, d2, d3);
-    let n_poly = add(
-        &bernstein_product(&bernstein_derivative_coeffs(&delta), &g),
-        &bernstein_product(&delta, &bernstein_derivative_coeffs(&g)),
-        -1.0,
-    );
-    Ok(decide(n_poly))
+    let g = dot(&cross, &cross);
+    let delta = dot(&cross, d3);
+    let num = delta
+        .derivative()
+        .mul(&g)
+        .add_scaled(&delta.mul(&g.derivative()), -1);
+    Ok((num, g))
+}
+
+/// Checks the regularity polynomial, then decides the sign of the numerator.
+fn decide(
+    num: &ScaledBernstein,
+    regular: &ScaledBernstein,
+    quantity: &'static str,
+) -> Result<Certificate, ClassAError> {
+    match positivity(regular) {
+        Positivity::Positive => {}
+        Positivity::FailsAt(t) => {
+            return Err(ClassAError::Singular {
+                quantity,
+                parameter: t.to_f64(),
+            });
+        }
+        Positivity::Undecided { lo, hi } => {
+            return Ok(Certificate {
+                verdict: Monotonicity::Undecided {
+                    cause: UndecidedCause::Regularity,
+                    interval: (lo, hi),
+                },
+                by_coefficient_signs: false,
+            });
+        }
+    }
+    let c = num.coefficients();
+    let by_coefficient_signs = c.iter().all(|x| x.sign() != num_bigint::Sign::Minus)
+        || c.iter().all(|x| x.sign() != num_bigint::Sign::Plus);
+    let verdict = match sign_profile(num) {
+        SignProfile::Zero => Monotonicity::Constant,
+        SignProfile::NonNegative => Monotonicity::Increasing,
+        SignProfile::NonPositive => Monotonicity::Decreasing,
+        SignProfile::Changes { positive, negative } => {
+            let (lo, hi) = locate_sign_change(num, &positive, &negative);
+            Monotonicity::NotMonotone {
+                extremum: 0.5 * (lo + hi),
+                bracket: (lo, hi),
+            }
+        }
+        SignProfile::Undecided { lo, hi } => Monotonicity::Undecided {
+            cause: UndecidedCause::Sign,
+            interval: (lo, hi),
+        },
+    };
+    Ok(Certificate {
+        verdict,
+        by_coefficient_signs,
+    })
+}
+
+/// Proven certificate of monotone curvature of a planar or spatial curve of any degree.
+///
+/// κ² = G/P³ with P = |x'|² and G = |x' × x''|², so d(κ²)/dt = N/P⁴ with N = G'P − 3GP'
+/// ([`curvature_numerator`]), formed exactly in integers. Regularity P > 0 on [0, 1] is proven
+/// first; then all Bernstein coefficients of N of one sign prove monotonicity (convex hull), and
+/// otherwise exact subdivision at 1/2 either proves one sign piece by piece or finds exact values
+/// of opposite signs (an interior extremum, bracketed by exact bisection).
+///
+/// # Errors
+/// [`ClassAError::DegreeTooLow`] for n < 2, [`ClassAError::NonFinite`], and
+/// [`ClassAError::Singular`] when x' = 0 at an exact dyadic parameter.
+pub fn curvature_certificate<const D: usize>(
+    curve: &BezierCurve<D>,
+) -> Result<Certificate, ClassAError> {
+    let (num, p) = curvature_numerator(curve)?;
+    decide(&num, &p, "x' (speed)")
+}
+
+/// Proven certificate of monotone torsion of a spatial curve of any degree.
+///
+/// τ = Δ/G with Δ = det(x', x'', x''') and G = |x' × x''|², so dτ/dt = (Δ'G − ΔG')/G²
+/// ([`torsion_numerator`]); G > 0 on [0, 1] (torsion defined) is proven first, then the
+/// numerator is decided as in [`curvature_certificate`].
+///
+/// # Errors
+/// [`ClassAError::DegreeTooLow`] for n < 3, [`ClassAError::NonFinite`], and
+/// [`ClassAError::Singular`] when x' × x'' = 0 at an exact dyadic parameter.
+pub fn torsion_certificate(curve: &BezierCurve<3>) -> Result<Certificate, ClassAError> {
+    let (num, g) = torsion_numerator(curve)?;
+    decide(&num, &g, "x' × x'' (curvature)")
 }

@@ -21,13 +21,14 @@ pub enum ClassAError {
         /// The smallest degree accepted.
         needed: usize,
     },
-    /// The degree is too high for an exact Bernstein certificate (binomials beyond 120).
-    #[error("degree {degree} is too high for the Bernstein certificate (at most {max})")]
-    DegreeTooHigh {
-        /// The degree given.
-        degree: usize,
-        /// The largest degree accepted.
-        max: usize,
+    /// The curve is singular at an exact parameter: x' = 0 (curvature undefined) or
+    /// x' × x'' = 0 (torsion undefined).
+    #[error("{quantity} vanishes at t = {parameter}: the quantity is undefined there")]
+    Singular {
+        /// What vanishes.
+        quantity: &'static str,
+        /// The parameter (an exact dyadic, rounded to f64).
+        parameter: f64,
     },
     /// Two interactive control points coincide, so a tangent direction is undefined.
     #[error("interactive points {first} and {second} coincide")]

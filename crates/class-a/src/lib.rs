@@ -27,21 +27,24 @@
 mod certificate;
 mod curve;
 mod error;
+mod exact;
 mod general;
 mod lcg;
 mod matrix;
 mod planar;
+mod sign;
 mod spatial;
 mod spiral;
 
 pub mod cases;
 
 pub use crate::certificate::{
-    Certificate, MAX_CURVATURE_DEGREE, MAX_TORSION_DEGREE, Monotonicity, ROUNDING_ALLOWANCE,
-    curvature_certificate, torsion_certificate,
+    Certificate, Monotonicity, UndecidedCause, curvature_certificate, curvature_numerator,
+    torsion_certificate, torsion_numerator,
 };
 pub use crate::curve::class_a_curve;
 pub use crate::error::ClassAError;
+pub use crate::exact::ScaledBernstein;
 pub use crate::general::{perturb2, perturb3};
 pub use crate::lcg::{
     LogGraph, curvature_samples, curvature_with_derivative, log_graph, log_graph_from_points,
@@ -54,5 +57,6 @@ pub use crate::planar::{
     PlanarFeasibility, PlanarGeometry, TypicalPlanar, planar_feasibility, planar_nelder_mead,
     solve_scale,
 };
+pub use crate::sign::{MAX_PIECES, MAX_SUBDIVISION_DEPTH};
 pub use crate::spatial::{TypicalSpatial, rotation};
 pub use crate::spiral::{apollonius_pole, log_spiral_pole, printed_pole_eq19, spiral_deviation};

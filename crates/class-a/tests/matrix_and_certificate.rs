@@ -72,7 +72,7 @@ fn certificate_finds_interior_extremum() {
     ])
     .unwrap();
     match curvature_certificate(&c).unwrap().verdict {
-        Monotonicity::NotMonotone { extremum } => assert!((extremum - 0.5).abs() < 1e-9),
+        Monotonicity::NotMonotone { extremum, .. } => assert!((extremum - 0.5).abs() < 1e-9),
         v => panic!("{v:?}"),
     }
     let line = BezierCurve::new(vec![
@@ -94,17 +94,18 @@ fn certificate_errors() {
         curvature_certificate(&c),
         Err(ClassAError::DegreeTooLow { .. })
     ));
-    let big = class_a_curve(
-        &Vector2::zeros(),
-        &Vector2::new(1.0, 0.0),
-        &typical_matrix2(1.1, 0.01),
-        30,
-    )
+    // A cusp at the dyadic parameter 1/2: x' = 0 there, proven exactly.
+    let cusp = BezierCurve::new(vec![
+        Vector2::new(0.0, 0.0),
+        Vector2::new(1.0, 1.0),
+        Vector2::new(0.0, 1.0),
+        Vector2::new(1.0, 0.0),
+    ])
     .unwrap();
-    assert!(matches!(
-        curvature_certificate(&big),
-        Err(ClassAError::DegreeTooHigh { .. })
-    ));
+    match curvature_certificate(&cusp) {
+        Err(ClassAError::Singular { parameter, .. }) => assert_eq!(parameter, 0.5),
+        r => panic!("{r:?}"),
+    }
     let q = BezierCurve::new(vec![Vector3::zeros(), Vector3::x(), Vector3::y()]).unwrap();
     assert!(matches!(
         torsion_certificate(&q),
@@ -188,7 +189,8 @@ mod certificate_vs_sampling {
                 Monotonicity::Increasing => prop_assert!(ks.windows(2).all(|w| w[1] >= w[0] - tol)),
                 Monotonicity::Decreasing => prop_assert!(ks.windows(2).all(|w| w[1] <= w[0] + tol)),
                 Monotonicity::Constant => prop_assert!(ks.windows(2).all(|w| (w[1] - w[0]).abs() <= tol)),
-                Monotonicity::NotMonotone { extremum: e } => {
+                Monotonicity::Undecided { .. } => prop_assert!(false, "undecided: {cert:?}"),
+                Monotonicity::NotMonotone { extremum: e, .. } => {
                     prop_assert!(e > 0.0 && e < 1.0);
                     // A local extremum of κ: the one-sided differences do not share a sign.
                     let h = (e.min(1.0 - e) / 2.0).min(1e-4);

@@ -1,0 +1,377 @@
+//! Exact sign of an integer polynomial on [0, 1] by de Casteljau subdivision at 1/2.
+//!
+//! Bernstein coefficients of one sign on a piece prove that sign there (convex-hull property);
+//! the first and last coefficients are the exact values at the piece's dyadic end points. Pieces
+//! with mixed signs are halved; halving keeps integers when every level is scaled by 2ᴺ.
+
+use num_bigint::BigInt;
+use num_traits::{ToPrimitive, Zero};
+
+use crate::exact::{ScaledBernstein, sign};
+
+/// Deepest subdivision level (pieces of width 2⁻⁹⁶) before a piece is reported undecided.
+pub const MAX_SUBDIVISION_DEPTH: u32 = 96;
+/// Most pieces examined before the remaining ones are reported undecided.
+pub const MAX_PIECES: usize = 20_000;
+/// Exact bisection of a proven sign change stops at this width (2⁻⁴⁰ ≈ 9.1e-13).
+const LOCATE_LEVEL: u32 = 40;
+
+/// A dyadic point m / 2ʲ of [0, 1].
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub(crate) struct Dyadic {
+    m: BigInt,
+    j: u32,
+}
+
+impl Dyadic {
+    fn new(m: BigInt, j: u32) -> Self {
+        Self { m, j }
+    }
+
+    /// The point rounded to f64.
+    pub(crate) fn to_f64(&self) -> f64 {
+        let m = self.m.to_f64().unwrap_or(f64::NAN);
+        m * 2f64.powi(-i32::try_from(self.j).unwrap_or(i32::MAX))
+    }
+
+    /// The numerator at level j ≥ self.j.
+    fn at_level(&self, j: u32) -> BigInt {
+        &self.m << (j - self.j)
+    }
+}
+
+/// What the subdivision proved about the sign of f on [0, 1].
+#[derive(Debug, Clone, PartialEq)]
+pub(crate) enum SignProfile {
+    /// f ≡ 0.
+    Zero,
+    /// f ≥ 0 and not identically zero.
+    NonNegative,
+    /// f ≤ 0 and not identically zero.
+    NonPositive,
+    /// f(positive) > 0 and f(negative) < 0, so f changes sign between them.
+    Changes {
+        /// A point where f > 0.
+        positive: Dyadic,
+        /// A point where f < 0.
+        negative: Dyadic,
+    },
+    /// No piece proved a sign change, but the piece [lo, hi] still had mixed signs at the cap.
+    Undecided {
+        /// Start of the first unresolved piece.
+        lo: f64,
+        /// End of the first unresolved piece.
+        hi: f64,
+    },
+}
+
+/// A piece [m/2ʲ, (m + 1)/2ʲ] with its Bernstein coefficients times a positive constant.
+struct Piece {
+    b: Vec<BigInt>,
+    m: BigInt,
+    j: u32,
+}
+
+/// Divides all coefficients by their common power of two (keeps integers small).
+fn strip_twos(b: &mut [BigInt]) {
+    let tz = b.iter().filter_map(BigInt::trailing_zeros).min();
+    if let Some(tz) = tz.filter(|&t| t > 0) {
+        for x in b.iter_mut() {
+            *x >>= tz;
+        }
+    }
+}
+
+/// de Casteljau at 1/2 in integers: level r sums give 2ʳ × the true values, rescaled by 2ᴺ⁻ʳ.
+fn halves(b: &[BigInt]) -> (Vec<BigInt>, Vec<BigInt>) {
+    let n = b.len() - 1;
+    let mut c = b.to_vec();
+    let mut left = Vec::with_capacity(n + 1);
+    let mut right = vec![BigInt::zero(); n + 1];
+    for r in 0..=n {
+        if r > 0 {
+            for i in 0..=n - r {
+                let next = c[i + 1].clone();
+                c[i] += next;
+            }
+        }
+        left.push(&c[0] << (n - r));
+        right[n - r] = &c[n - r] << (n - r);
+    }
+    strip_twos(&mut left);
+    strip_twos(&mut right);
+    (left, right)
+}
+
+/// A point of the piece where f has the strict sign `want`, knowing f has that sign or is zero
+/// on the piece and is not identically zero: an end point if its coefficient has the sign, else
+/// one of 2ᵏ − 1 > N interior dyadic points (f has at most N zeros).
+fn witness(f: &ScaledBernstein, p: &Piece, want: i8) -> Option<Dyadic> {
+    let n = p.b.len() - 1;
+    if sign(&p.b[0]) == want {
+        return Some(Dyadic::new(p.m.clone(), p.j));
+    }
+    if sign(&p.b[n]) == want {
+        return Some(Dyadic::new(&p.m + 1, p.j));
+    }
+    let k = usize::BITS - (n + 1).leading_zeros() + 1; // 2ᵏ > N + 1
+    let base = &p.m << k;
+    (1..(1u64 << k))
+        .map(|i| Dyadic::new(&base + i, p.j + k))
+        .find(|d| f.sign_at(&d.m, d.j) == want)
+}
+
+/// Decides the sign of f on [0, 1] exactly (see [`SignProfile`]).
+pub(crate) fn sign_profile(f: &ScaledBernstein) -> SignProfile {
+    if f.is_zero() {
+        return SignProfile::Zero;
+    }
+    let mut b = f.bernstein_times_factorial();
+    strip_twos(&mut b);
+    let mut stack = vec![Piece {
+        b,
+        m: BigInt::zero(),
+        j: 0,
+    }];
+    let (mut pos, mut neg): (Option<Dyadic>, Option<Dyadic>) = (None, None);
+    let mut undecided: Option<(f64, f64)> = None;
+    let mut pieces = 0usize;
+    while let Some(p) = stack.pop() {
+        pieces += 1;
+        let has_pos = p.b.iter().any(|x| sign(x) > 0);
+        let has_neg = p.b.iter().any(|x| sign(x) < 0);
+        if has_pos && pos.is_none() {
+            pos = witness_if_one_signed(f, &p, 1, has_neg);
+        }
+        if has_neg && neg.is_none() {
+            neg = witness_if_one_signed(f, &p, -1, has_pos);
+        }
+        let one_signed_without_witness =
+            (has_pos && !has_neg && pos.is_none()) || (has_neg && !has_pos && neg.is_none());
+        if one_signed_without_witness {
+            // Impossible for a non-zero f (at most N zeros); kept as an honest fallback.
+            undecided.get_or_insert((
+                Dyadic::new(p.m.clone(), p.j).to_f64(),
+                Dyadic::new(&p.m + 1, p.j).to_f64(),
+            ));
+        }
+        if let (Some(positive), Some(negative)) = (&pos, &neg) {
+            return SignProfile::Changes {
+                positive: positive.clone(),
+                negative: negative.clone(),
+            };
+        }
+        if has_pos && has_neg {
+            if p.j >= MAX_SUBDIVISION_DEPTH || pieces >= MAX_PIECES {
+                let lo = Dyadic::new(p.m.clone(), p.j).to_f64();
+                let hi = Dyadic::new(&p.m + 1, p.j).to_f64();
+                undecided.get_or_insert((lo, hi));
+                continue;
+            }
+            let (l, r) = halves(&p.b);
+            let m2 = &p.m << 1;
+            stack.push(Piece {
+                b: r,
+                m: &m2 + 1,
+                j: p.j + 1,
+            });
+            stack.push(Piece {
+                b: l,
+                m: m2,
+                j: p.j + 1,
+            });
+        }
+    }
+    match (undecided, pos.is_some(), neg.is_some()) {
+        (Some((lo, hi)), _, _) => SignProfile::Undecided { lo, hi },
+        (None, true, false) => SignProfile::NonNegative,
+        (None, false, true) => SignProfile::NonPositive,
+        // Unreachable for a non-zero f; never claim a sign without proof.
+        _ => SignProfile::Undecided { lo: 0.0, hi: 1.0 },
+    }
+}
+
+/// On a one-signed piece, a witness of that sign; on a mixed piece, an end point with the
+/// sign if there is one (exact values), else nothing yet.
+fn witness_if_one_signed(f: &ScaledBernstein, p: &Piece, want: i8, mixed: bool) -> Option<Dyadic> {
+    if !mixed {
+        return witness(f, p, want);
+    }
+    let n = p.b.len() - 1;
+    if sign(&p.b[0]) == want {
+        Some(Dyadic::new(p.m.clone(), p.j))
+    } else if sign(&p.b[n]) == want {
+        Some(Dyadic::new(&p.m + 1, p.j))
+    } else {
+        None
+    }
+}
+
+/// Narrows a proven sign change by exact bisection: returns (lo, hi), lo < hi, dyadic end
+/// points rounded to f64, with f of opposite strict signs at the two exact end points, of width
+/// at most 2⁻⁴⁰ unless a midpoint is a zero of f (then the neighbouring dyadics are tried).
+pub(crate) fn locate_sign_change(
+    f: &ScaledBernstein,
+    positive: &Dyadic,
+    negative: &Dyadic,
+) -> (f64, f64) {
+    let mut j = positive.j.max(negative.j);
+    let (mut a, mut b) = (positive.at_level(j), negative.at_level(j)); // f(a) > 0 > f(b)
+    while j < LOCATE_LEVEL + 8 {
+        let width = (&b - &a).magnitude().clone();
+        if j >= LOCATE_LEVEL && width.bits() <= u64::from(j - LOCATE_LEVEL) + 1 {
+            break;
+        }
+        a <<= 1;
+        b <<= 1;
+        j += 1;
+        let mid: BigInt = (&a + &b) >> 1u32;
+        let step = if a < b {
+            BigInt::from(1)
+        } else {
+            BigInt::from(-1)
+        };
+        for c in [mid.clone(), &mid - &step, &mid + &step] {
+            if c == a || c == b {
+                continue;
+            }
+            match f.sign_at(&c, j) {
+                1 => {
+                    a = c;
+                    break;
+                }
+                -1 => {
+                    b = c;
+                    break;
+                }
+                _ => {}
+            }
+        }
+    }
+    let (x, y) = (Dyadic::new(a, j).to_f64(), Dyadic::new(b, j).to_f64());
+    (x.min(y), x.max(y))
+}
+
+/// What the subdivision proved about strict positivity of f on [0, 1] (regularity checks).
+#[derive(Debug, Clone, PartialEq)]
+pub(crate) enum Positivity {
+    /// f > 0 on [0, 1].
+    Positive,
+    /// f ≤ 0 at this exact dyadic point.
+    FailsAt(Dyadic),
+    /// A piece [lo, hi] still had a coefficient ≤ 0 at the cap.
+    Undecided {
+        /// Start of the unresolved piece.
+        lo: f64,
+        /// End of the unresolved piece.
+        hi: f64,
+    },
+}
+
+/// Decides f > 0 on [0, 1]: all coefficients of every piece positive proves it; an end point
+/// coefficient ≤ 0 is an exact value ≤ 0 there.
+pub(crate) fn positivity(f: &ScaledBernstein) -> Positivity {
+    let mut b = f.bernstein_times_factorial();
+    strip_twos(&mut b);
+    let mut stack = vec![Piece {
+        b,
+        m: BigInt::zero(),
+        j: 0,
+    }];
+    let mut pieces = 0usize;
+    while let Some(p) = stack.pop() {
+        pieces += 1;
+        let n = p.b.len() - 1;
+        if sign(&p.b[0]) <= 0 {
+            return Positivity::FailsAt(Dyadic::new(p.m, p.j));
+        }
+        if sign(&p.b[n]) <= 0 {
+            return Positivity::FailsAt(Dyadic::new(p.m + 1, p.j));
+        }
+        if p.b.iter().all(|x| sign(x) > 0) {
+            continue;
+        }
+        if p.j >= MAX_SUBDIVISION_DEPTH || pieces >= MAX_PIECES {
+            return Positivity::Undecided {
+                lo: Dyadic::new(p.m.clone(), p.j).to_f64(),
+                hi: Dyadic::new(&p.m + 1, p.j).to_f64(),
+            };
+        }
+        let (l, r) = halves(&p.b);
+        let m2 = &p.m << 1;
+        stack.push(Piece {
+            b: r,
+            m: &m2 + 1,
+            j: p.j + 1,
+        });
+        stack.push(Piece {
+            b: l,
+            m: m2,
+            j: p.j + 1,
+        });
+    }
+    Positivity::Positive
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn poly(v: &[i64]) -> ScaledBernstein {
+        ScaledBernstein::new(v.iter().map(|&x| BigInt::from(x)).collect())
+    }
+
+    #[test]
+    fn halving_matches_exact_values() {
+        // (1 − 2t)² = [1, −2, 1] scaled... Bernstein [1, −1, 1]: values 1, 0, 1 at 0, 1/2, 1.
+        let f = ScaledBernstein::from_bernstein(vec![1.into(), (-1).into(), 1.into()]);
+        let (l, r) = halves(&f.bernstein_times_factorial());
+        assert_eq!(sign(&l[0]), 1);
+        assert_eq!(sign(&l[2]), 0);
+        assert_eq!(sign(&r[0]), 0);
+        // A double root at 1/2: non-negative, not strictly positive.
+        assert_eq!(sign_profile(&f), SignProfile::NonNegative);
+        assert_eq!(
+            positivity(&f),
+            Positivity::FailsAt(Dyadic::new(1.into(), 1))
+        );
+    }
+
+    #[test]
+    fn profiles_of_simple_polynomials() {
+        assert_eq!(sign_profile(&poly(&[0, 0, 0])), SignProfile::Zero);
+        assert_eq!(sign_profile(&poly(&[3, -1, 3])), SignProfile::NonNegative); // 3 − 7t + 7t²
+        assert_eq!(positivity(&poly(&[3, -1, 3])), Positivity::Positive);
+        assert_eq!(sign_profile(&poly(&[-1, 0, -2])), SignProfile::NonPositive);
+        // (1 − 3t) changes sign at 1/3, not a dyadic point.
+        let f = poly(&[1, -2]);
+        match sign_profile(&f) {
+            SignProfile::Changes { positive, negative } => {
+                let (lo, hi) = locate_sign_change(&f, &positive, &negative);
+                assert!(
+                    lo < 1.0 / 3.0 && 1.0 / 3.0 < hi && hi - lo < 1e-12,
+                    "{lo} {hi}"
+                );
+            }
+            p => panic!("{p:?}"),
+        }
+        // 1 + t(1−t)·(−8) dips below zero around 1/2 without sign change at the ends.
+        let g = poly(&[1, -6, 1]);
+        assert!(matches!(sign_profile(&g), SignProfile::Changes { .. }));
+    }
+
+    #[test]
+    fn a_root_too_close_to_an_end_is_undecided_not_guessed() {
+        // f = (t − ε)² with ε = 2⁻²⁰⁰: non-negative, but the pieces near 0 stay mixed
+        // beyond the depth cap; the profile must not claim a sign.
+        let e = BigInt::from(1) << 200u32;
+        // Power form (t − 1/e)² · e² = e²t² − 2et + 1 → scaled basis (1−t)², t(1−t), t².
+        let f = ScaledBernstein::new(vec![
+            BigInt::from(1),
+            BigInt::from(2) - 2 * &e,
+            &e * &e - 2 * &e + 1,
+        ]);
+        assert!(matches!(sign_profile(&f), SignProfile::Undecided { .. }));
+        assert!(matches!(positivity(&f), Positivity::Undecided { .. }));
+    }
+}

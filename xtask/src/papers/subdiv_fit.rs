@@ -6,7 +6,7 @@ use std::path::{Path, PathBuf};
 use std::time::Instant;
 
 use serde_json::{Value, json};
-use subdiv_fit::cases::{closed_petals, open_wave};
+use subdiv_fit::cases::{closed_petals, open_wave, rippled_petals};
 use subdiv_fit::{
     ErrorMeasure, Fit, FitMode, FitOptions, SubdivCurve, Vector2, discrete_curvature, fit,
 };
@@ -94,13 +94,20 @@ fn fit_table() -> Result<Table, DynError> {
 fn scaling_table() -> Result<Table, DynError> {
     let mut md = String::from(
         "## subdiv-fit: the same shapes sampled 1x, 10x, 100x more densely (tolerance 0.01, two-sided, interpolation)\n\n\
+         \"rippled petals\" is `cases::rippled_petals(density, 0.08, 9.0, 0.0)`, many close curvature maxima.\n\
          Times are wall-clock of one release-mode fit on the machine that ran `cargo xtask tables` (not checked).\n\n\
          | shape | density | points | rounds | control points | max data→curve | max curve→data | time (ms) |\n\
          |---|---|---|---|---|---|---|---|\n",
     );
     let mut rows = Vec::new();
     for density in [1, 10, 100] {
-        for (name, data, closed, _) in shapes(density) {
+        let rippled = (
+            "rippled petals",
+            rippled_petals(density, 0.08, 9.0, 0.0),
+            true,
+            0,
+        );
+        for (name, data, closed, _) in shapes(density).into_iter().chain([rippled]) {
             let opts = FitOptions::new(TOL);
             let start = Instant::now();
             let f = fit(&data, closed, &opts)?;

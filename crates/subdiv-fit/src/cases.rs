@@ -24,6 +24,22 @@ pub fn closed_petals(density: usize) -> Vec<Vector2<f64>> {
     normalize(pts)
 }
 
+/// Closed "rippled petals": `r(θ) = 1 + 0.4 |sin 2θ| + a cos(kθ + φ)`,
+/// `θ_i = 2π i / (64 · density)`: the four corners of [`closed_petals`] plus `k` ripples of
+/// amplitude `a`, so many close, unevenly spaced curvature maxima. `rippled_petals(d, 0.08, 9.0, 0.0)`
+/// is the shape on which an earlier insertion rule stalled at 10x and 100x density.
+pub fn rippled_petals(density: usize, a: f64, k: f64, phase: f64) -> Vec<Vector2<f64>> {
+    let n = 64 * density.max(1);
+    let pts = (0..n)
+        .map(|i| {
+            let t = std::f64::consts::TAU * i as f64 / n as f64;
+            let r = 1.0 + 0.4 * (2.0 * t).sin().abs() + a * (k * t + phase).cos();
+            Vector2::new(r * t.cos(), r * t.sin())
+        })
+        .collect();
+    normalize(pts)
+}
+
 /// Open "wave with two kinks": `y = 0.2 sin(5π x) + 0.8 (|x − 22/65| + |x − 44/65|)`,
 /// `x_i = i / (65 · density)`, 66 points at density 1, two corners (slope jump 1.6, turning about
 /// 77° on a flat part) and the smooth crests of the sine.

@@ -9,6 +9,7 @@ use crate::bspline::bspline_basis;
 use crate::curvature::feature_points;
 use crate::curve::combine;
 use crate::distance::{foot_point_ctrl, point_polyline_distance};
+use crate::insertion::{ChordLengths, Verdict, insert_points, segment_range};
 use crate::tridiagonal::solve_tridiagonal;
 use crate::{SubdivCurve, SubdivFitError};
 
@@ -42,9 +43,10 @@ pub enum Insertion {
     /// nearest the worst curve sample). Literal reading of Sec. 4.3; on unevenly spaced fitting
     /// points it can make the uniform-parameter interpolation ring and stall.
     MaxError,
-    /// The interior data point nearest the segment's chord-length middle: neighbouring segments
-    /// never differ by more than a factor of about two in data count, which keeps the
-    /// uniform-parameter interpolation of eq. (4) from ringing.
+    /// The interior data point nearest the segment's chord-length middle: the two halves are equal,
+    /// so the fitting points stay more evenly spaced than with [`Insertion::MaxError`] (eq. (4)
+    /// interpolates at uniform parameters, and uneven spacing makes it ring), and a failing segment
+    /// of `m` data edges is down to single edges within `log2(m)` rounds.
     Bisect,
 }
 
@@ -219,9 +221,8 @@ fn validate_options(o: &FitOptions) -> Result<(), SubdivFitError> {
 /// 3. Errors per segment: each data point between two fitting points against that segment only, by
 ///    Newton on eq. (6) from the chord-length parameter; with [`ErrorMeasure::TwoSided`] also the
 ///    distance of dense curve samples to the segment's data polyline.
-/// 4. In every segment whose error exceeds the tolerance, the data point of largest error (or, for a
-///    curve-to-data excess, the data point nearest the worst curve sample) becomes a new regular
-///    fitting point; repeat.
+/// 4. Every segment whose error exceeds the tolerance gets a new regular fitting point, chosen by
+///    [`FitOptions::insertion`] (by default the chord-length middle); repeat.
 ///
 /// # Errors
 /// Invalid data or options (typed), [`SubdivFitError::SingularSystem`],
@@ -248,6 +249,7 @@ pub fn fit<const D: usize>(
         }
     }
     let initial: Vec<usize> = fitting.iter().map(|f| f.0).collect();
+    let chords = ChordLengths::new(data, closed);
     let mut reports = Vec::new();
     for round in 0..=options.max_rounds {
         let curve = solve_curve(data, &fitting, closed, options.mode)?;
@@ -271,20 +273,15 @@ pub fn fit<const D: usize>(
                 reports,
             });
         }
-        if round == options.max_rounds || assessment.insert.is_empty() {
-            return Err(SubdivFitError::NoConvergence {
-                rounds: round,
-                max_error: worst,
-                tolerance: options.tolerance,
-            });
-        }
-        let before = fitting.len();
-        for idx in assessment.insert {
-            if let Err(pos) = fitting.binary_search_by_key(&idx, |f| f.0) {
-                fitting.insert(pos, (idx, false));
-            }
-        }
-        if fitting.len() == before {
+        if round == options.max_rounds
+            || insert_points(
+                &mut fitting,
+                &assessment.verdicts,
+                options.insertion,
+                &chords,
+                closed,
+            ) == 0
+        {
             return Err(SubdivFitError::NoConvergence {
                 rounds: round,
                 max_error: worst,
@@ -322,17 +319,6 @@ fn split_largest_gap(fitting: &mut Vec<(usize, bool)>, n: usize) {
     if let Err(pos) = fitting.binary_search_by_key(&idx, |f| f.0) {
         fitting.insert(pos, (idx, false));
     }
-}
-
-/// Data indices of segment j: from fitting[j] to fitting[j+1] inclusive (unwrapped, may exceed n).
-fn segment_range(fitting: &[(usize, bool)], j: usize, n: usize) -> (usize, usize) {
-    let a = fitting[j].0;
-    let b = if j + 1 < fitting.len() {
-        fitting[j + 1].0
-    } else {
-        fitting[0].0 + n
-    };
-    (a, b)
 }
 
 /// Solves eq. (4) (and, in least-squares mode, the least-squares refinement).
@@ -489,7 +475,7 @@ struct Assessment {
     max_d2c: f64,
     rms_d2c: f64,
     max_c2d: f64,
-    insert: Vec<usize>,
+    verdicts: Vec<Verdict>,
 }
 
 fn assess<const D: usize>(
@@ -502,12 +488,16 @@ fn assess<const D: usize>(
     let n = data.len();
     let tol = options.tolerance;
     let (mut max_d2c, mut sum2, mut count, mut max_c2d) = (0.0_f64, 0.0, 0usize, 0.0_f64);
-    let mut insert = Vec::new();
+    let mut verdicts = Vec::new();
     let segs = curve.segment_count();
     let mut poly: Vec<SVector<f64, D>> = Vec::new();
     for j in 0..segs {
         let (a, b) = segment_range(fitting, j, n);
         let Ok(ctrl) = curve.segment_controls(j) else {
+            verdicts.push(Verdict {
+                fails: false,
+                worst_point: None,
+            });
             continue;
         };
         let chord = chord_params(data, a, b);
@@ -531,22 +521,11 @@ fn assess<const D: usize>(
             }
         }
         max_d2c = max_d2c.max(seg_max);
-        let bisect = (b > a + 1).then(|| {
-            let mid = chord
-                .iter()
-                .enumerate()
-                .skip(1)
-                .take(b - a - 1)
-                .min_by(|x, y| (x.1 - 0.5).abs().total_cmp(&(y.1 - 0.5).abs()))
-                .map_or(1, |x| x.0);
-            (a + mid) % n
-        });
-        let mut candidate = match (seg_max > tol, options.insertion) {
-            (false, _) => None,
-            (true, Insertion::MaxError) => seg_arg,
-            (true, Insertion::Bisect) => bisect,
+        let mut verdict = Verdict {
+            fails: seg_max > tol,
+            worst_point: seg_arg.filter(|_| seg_max > tol),
         };
-        if options.measure == ErrorMeasure::TwoSided || candidate.is_none() {
+        if options.measure == ErrorMeasure::TwoSided || !verdict.fails {
             poly.clear();
             poly.extend((a..=b).map(|i| data[i % n]));
             let s = options.samples_per_segment;
@@ -560,31 +539,18 @@ fn assess<const D: usize>(
                 }
             }
             max_c2d = max_c2d.max(worst);
-            if options.measure == ErrorMeasure::TwoSided && candidate.is_none() && worst > tol {
+            if options.measure == ErrorMeasure::TwoSided && !verdict.fails && worst > tol {
                 let p = combine(&ctrl, bspline_basis(worst_u));
-                candidate = if options.insertion == Insertion::Bisect {
-                    bisect
-                } else {
-                    (a + 1..b)
+                verdict = Verdict {
+                    fails: true,
+                    worst_point: (a + 1..b)
                         .map(|i| (i % n, (data[i % n] - p).norm()))
                         .min_by(|x, y| x.1.total_cmp(&y.1))
-                        .map(|x| x.0)
+                        .map(|x| x.0),
                 };
-                if candidate.is_none() {
-                    // No data inside: the segment's shape is set by its neighbours' control
-                    // points, so tighten those by taking the data points just outside it.
-                    if closed || a >= 1 {
-                        insert.push((a + n - 1) % n);
-                    }
-                    if closed || b + 1 < n {
-                        insert.push((b + 1) % n);
-                    }
-                }
             }
         }
-        if let Some(c) = candidate {
-            insert.push(c);
-        }
+        verdicts.push(verdict);
     }
     Assessment {
         max_d2c,
@@ -594,6 +560,6 @@ fn assess<const D: usize>(
             0.0
         },
         max_c2d,
-        insert,
+        verdicts,
     }
 }

@@ -61,6 +61,7 @@ mod distance;
 pub mod eigen;
 mod error;
 mod fit;
+mod insertion;
 mod svg;
 mod tridiagonal;
 

@@ -6,7 +6,7 @@ use std::path::{Path, PathBuf};
 use std::time::Instant;
 
 use serde_json::{Value, json};
-use subdiv_fit::cases::{closed_petals, open_wave};
+use subdiv_fit::cases::{closed_petals, open_wave, rippled_petals};
 use subdiv_fit::{
     ErrorMeasure, Fit, FitMode, FitOptions, SubdivCurve, Vector2, discrete_curvature, fit,
 };
@@ -16,6 +16,23 @@ use crate::plot::{Plot, Series, Style};
 use crate::tables::Table;
 
 const TOL: f64 = 0.01;
+
+/// Runs `f` `reps` times (at least once); returns its last result and the median wall time in ms.
+pub(super) fn median_ms<T>(
+    reps: usize,
+    mut f: impl FnMut() -> Result<T, DynError>,
+) -> Result<(T, f64), DynError> {
+    let mut times = Vec::with_capacity(reps.max(1));
+    let mut last = None;
+    for _ in 0..reps.max(1) {
+        let start = Instant::now();
+        last = Some(f()?);
+        times.push(start.elapsed().as_secs_f64() * 1e3);
+    }
+    times.sort_by(f64::total_cmp);
+    let value = last.ok_or("no repetition ran")?;
+    Ok((value, times[times.len() / 2]))
+}
 
 /// (name, data, closed, the paper's rounds for its own shape of that kind).
 fn shapes(density: usize) -> [(&'static str, Vec<Vector2<f64>>, bool, usize); 2] {
@@ -94,17 +111,22 @@ fn fit_table() -> Result<Table, DynError> {
 fn scaling_table() -> Result<Table, DynError> {
     let mut md = String::from(
         "## subdiv-fit: the same shapes sampled 1x, 10x, 100x more densely (tolerance 0.01, two-sided, interpolation)\n\n\
-         Times are wall-clock of one release-mode fit on the machine that ran `cargo xtask tables` (not checked).\n\n\
+         \"rippled petals\" is `cases::rippled_petals(density, 0.08, 9.0, 0.0)`, many close curvature maxima.\n\
+         Times are the median wall-clock of 5 release-mode fits on the machine that ran `cargo xtask tables` (not checked).\n\n\
          | shape | density | points | rounds | control points | max data→curve | max curve→data | time (ms) |\n\
          |---|---|---|---|---|---|---|---|\n",
     );
     let mut rows = Vec::new();
     for density in [1, 10, 100] {
-        for (name, data, closed, _) in shapes(density) {
+        let rippled = (
+            "rippled petals",
+            rippled_petals(density, 0.08, 9.0, 0.0),
+            true,
+            0,
+        );
+        for (name, data, closed, _) in shapes(density).into_iter().chain([rippled]) {
             let opts = FitOptions::new(TOL);
-            let start = Instant::now();
-            let f = fit(&data, closed, &opts)?;
-            let ms = start.elapsed().as_secs_f64() * 1e3;
+            let (f, ms) = median_ms(5, || Ok(fit(&data, closed, &opts)?))?;
             let r = f.last().ok_or("empty report")?;
             writeln!(
                 md,

@@ -9,13 +9,17 @@
 use std::fmt::Write as _;
 use std::ops::Range;
 
-use kurbo::{CurveFitSample, ParamCurve, ParamCurveFit, Point, Vec2, fit_to_bezpath_opt};
+use kurbo::{BezPath, CurveFitSample, ParamCurve, ParamCurveFit, Point, Vec2, fit_to_bezpath_opt};
 use serde_json::{Value, json};
 use subdiv_fit::cases::{closed_petals, open_wave};
 use subdiv_fit::{FitOptions, Vector2, feature_points, fit, point_polyline_distance};
 
+use super::subdiv_fit::median_ms;
 use crate::DynError;
 use crate::tables::Table;
+
+/// Repetitions for the median times.
+const REPS: usize = 21;
 
 /// A uniform Catmull–Rom interpolant of a run of points, parameter t ∈ [0, 1].
 struct CatmullRom {
@@ -119,12 +123,18 @@ fn two_sided(samples: &[Vector2<f64>], data: &[Vector2<f64>], closed: bool) -> f
 
 const SAMPLES: usize = 64;
 
+/// kurbo's fit of every run at `accuracy` (what the time column measures).
+fn kurbo_paths(runs: &[Vec<Point>], accuracy: f64) -> Vec<BezPath> {
+    runs.iter()
+        .map(|run| fit_to_bezpath_opt(&CatmullRom { pts: run.clone() }, accuracy))
+        .collect()
+}
+
 /// kurbo's fit at `accuracy`: (segments, samples); a line segment counts like a cubic.
 fn kurbo_fit(runs: &[Vec<Point>], accuracy: f64) -> (usize, Vec<Vector2<f64>>) {
     let mut segs = 0;
     let mut samples = Vec::new();
-    for run in runs {
-        let path = fit_to_bezpath_opt(&CatmullRom { pts: run.clone() }, accuracy);
+    for path in kurbo_paths(runs, accuracy) {
         for seg in path.segments() {
             segs += 1;
             for k in 0..=SAMPLES {
@@ -137,14 +147,15 @@ fn kurbo_fit(runs: &[Vec<Point>], accuracy: f64) -> (usize, Vec<Vector2<f64>>) {
 }
 
 pub(crate) fn table() -> Result<Table, DynError> {
-    let mut md = String::from(
+    let mut md = format!(
         "## subdiv-fit against kurbo's `fit_to_bezpath_opt` at the same two-sided error\n\n\
          subdiv-fit: tolerance 0.01, two-sided, interpolation and least squares.\n\
          kurbo: `fit_to_bezpath_opt` on a uniform Catmull–Rom interpolant of each run of data between the same sharp points, with the largest accuracy (bisection) whose two-sided error does not exceed subdiv-fit's.\n\
          Both errors are the same global measure: data to dense curve samples and curve samples to the data polyline.\n\
-         Bézier control points count shared end points once.\n\n\
-         | shape | method | cubic segments | Bézier control points | subdivision control points | two-sided max error | kurbo accuracy |\n\
-         |---|---|---|---|---|---|---|\n",
+         Bézier control points count shared end points once.\n\
+         Times (not checked) are the median wall-clock of {REPS} release-mode runs on the machine that ran `cargo xtask tables`: subdiv-fit's whole loop (`fit`), and kurbo's `fit_to_bezpath_opt` on all runs at the accuracy found (without the Catmull–Rom set-up or the bisection for the accuracy).\n\n\
+         | shape | method | cubic segments | Bézier control points | subdivision control points | two-sided max error | kurbo accuracy | time (ms) |\n\
+         |---|---|---|---|---|---|---|---|\n",
     );
     let mut rows = Vec::new();
     for (name, data, closed) in [
@@ -163,14 +174,11 @@ pub(crate) fn table() -> Result<Table, DynError> {
                 subdiv_fit::FitMode::LeastSquares,
             ),
         ] {
-            let f = fit(
-                &data,
-                closed,
-                &FitOptions {
-                    mode,
-                    ..FitOptions::new(0.01)
-                },
-            )?;
+            let opts = FitOptions {
+                mode,
+                ..FitOptions::new(0.01)
+            };
+            let (f, ms) = median_ms(REPS, || Ok(fit(&data, closed, &opts)?))?;
             let segs = f.curve.segment_count();
             let count = segs * SAMPLES;
             let params: Vec<f64> = (0..=count)
@@ -182,7 +190,7 @@ pub(crate) fn table() -> Result<Table, DynError> {
             target = target.min(err);
             writeln!(
                 md,
-                "| {name} | {label} | {segs} | {} | {} | {err:.5} | |",
+                "| {name} | {label} | {segs} | {} | {} | {err:.5} | | {ms:.3} |",
                 3 * segs + extra,
                 f.curve.points().len()
             )?;
@@ -202,9 +210,10 @@ pub(crate) fn table() -> Result<Table, DynError> {
         let acc = lo.exp();
         let (segs, s) = kurbo_fit(&runs, acc);
         let err = two_sided(&s, &data, closed);
+        let (_, ms) = median_ms(REPS, || Ok(kurbo_paths(&runs, acc)))?;
         writeln!(
             md,
-            "| {name} | kurbo `fit_to_bezpath_opt` | {segs} | {} | | {err:.5} | {acc:.5} |",
+            "| {name} | kurbo `fit_to_bezpath_opt` | {segs} | {} | | {err:.5} | {acc:.5} | {ms:.3} |",
             3 * segs + extra
         )?;
         rows.push(json!({"shape": name, "method": "kurbo", "segments": segs, "error": err}));

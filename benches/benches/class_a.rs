@@ -3,7 +3,10 @@
 
 use std::hint::black_box;
 
-use class_a::{TypicalPlanar, TypicalSpatial, cases, planar_nelder_mead};
+use class_a::{
+    TypicalPlanar, TypicalSpatial, cases, curvature_certificate, planar_nelder_mead,
+    torsion_certificate,
+};
 use criterion::{BenchmarkId, Criterion, criterion_group, criterion_main};
 
 fn planar(c: &mut Criterion) {
@@ -45,5 +48,33 @@ fn spatial(c: &mut Criterion) {
     g.finish();
 }
 
-criterion_group!(benches, planar, spatial);
+/// The exact certificates: cost growth with the degree (numerator degree 6n − 9 / 7n − 13).
+fn certificates(c: &mut Criterion) {
+    let a = cases::fig6_points();
+    let mut g = c.benchmark_group("class_a_curvature_certificate_planar");
+    g.sample_size(10);
+    for n in [7, 13, 25, 49] {
+        if let Ok(curve) =
+            TypicalPlanar::from_points(&a[0], &a[1], &a[2], n).and_then(|t| t.curve())
+        {
+            g.bench_with_input(BenchmarkId::from_parameter(n), &curve, |b, curve| {
+                b.iter(|| curvature_certificate(black_box(curve)));
+            });
+        }
+    }
+    g.finish();
+    let a = cases::fig8_points();
+    let mut g = c.benchmark_group("class_a_torsion_certificate_spatial");
+    g.sample_size(10);
+    for n in [7, 15, 30] {
+        if let Ok(curve) = TypicalSpatial::from_points(&a, n).and_then(|t| t.curve()) {
+            g.bench_with_input(BenchmarkId::from_parameter(n), &curve, |b, curve| {
+                b.iter(|| torsion_certificate(black_box(curve)));
+            });
+        }
+    }
+    g.finish();
+}
+
+criterion_group!(benches, planar, spatial, certificates);
 criterion_main!(benches);

@@ -93,6 +93,34 @@ pub enum ClassAError {
         /// The smallest |unit(Σ) − unit(chord)| found.
         residual: f64,
     },
+    /// The spatial solve converged, but no solution found is Class A: Farin's condition (3)
+    /// fails for M and for M⁻¹ in every one.
+    #[error(
+        "no Class A spatial curve found: {converged} converged solution(s) of the end conditions, the best has Class A margin {best_margin} < 0 (s = {s}, θ = {theta})"
+    )]
+    NoClassASolution {
+        /// Distinct converged solutions.
+        converged: usize,
+        /// The largest Class A margin among them (negative).
+        best_margin: f64,
+        /// The scale s of the best candidate.
+        s: f64,
+        /// The rotation angle θ of the best candidate.
+        theta: f64,
+    },
+    /// The rounded control points do not meet an end condition to the tolerance (e.g. the last
+    /// leg L·sⁿ⁻¹ is below the rounding of the end point, so its direction is not representable).
+    #[error(
+        "the control points meet the {condition} condition only to {achieved:e} (tolerance {tolerance:e})"
+    )]
+    ToleranceNotMet {
+        /// The worst condition ("end tangent", "end point", ...).
+        condition: &'static str,
+        /// Its achieved error (relative for points, radians for tangents).
+        achieved: f64,
+        /// The tolerance asked for.
+        tolerance: f64,
+    },
     /// An optimizer from argmin failed.
     #[error("optimizer failed: {message}")]
     Optimizer {

@@ -29,6 +29,7 @@ mod curve;
 mod error;
 mod exact;
 mod general;
+mod interpolation;
 mod lcg;
 mod matrix;
 mod planar;
@@ -46,6 +47,7 @@ pub use crate::curve::class_a_curve;
 pub use crate::error::ClassAError;
 pub use crate::exact::ScaledBernstein;
 pub use crate::general::{perturb2, perturb3};
+pub use crate::interpolation::{INTERPOLATION_TOLERANCE, Interpolation};
 pub use crate::lcg::{
     LogGraph, curvature_samples, curvature_with_derivative, log_graph, log_graph_from_points,
     torsion_samples, torsion_with_derivative,

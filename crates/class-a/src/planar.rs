@@ -3,8 +3,10 @@
 use bez_core::{BezierCurve, Vector2};
 use nalgebra::{Complex, Matrix2};
 
+#[cfg(doc)]
+use crate::INTERPOLATION_TOLERANCE;
 use crate::matrix::{typical_matrix2, typical_planar_margin};
-use crate::{ClassAError, class_a_curve};
+use crate::{ClassAError, Interpolation, class_a_curve};
 
 /// A typical planar Class A curve: b₀, first leg L·μ, and M = s·R(θ) (eq. (5)).
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -262,6 +264,29 @@ impl TypicalPlanar {
             theta,
             degree,
         })
+    }
+
+    /// [`TypicalPlanar::from_points`], then the curve and its achieved interpolation errors
+    /// ([`Interpolation`]), which must be within `tolerance` (the issue's [`INTERPOLATION_TOLERANCE`]
+    /// is 1e-9).
+    ///
+    /// # Errors
+    /// As [`TypicalPlanar::from_points`] and [`TypicalPlanar::curve`];
+    /// [`ClassAError::ToleranceNotMet`] when the rounded control points cannot meet the end
+    /// conditions (typically the end tangent when s ≪ 1 at high degree, where the last leg
+    /// L·sⁿ⁻¹ is below the rounding of bₙ).
+    pub fn generate(
+        a0: &Vector2<f64>,
+        a1: &Vector2<f64>,
+        a2: &Vector2<f64>,
+        degree: usize,
+        tolerance: f64,
+    ) -> Result<(Self, BezierCurve<2>, Interpolation), ClassAError> {
+        let t = Self::from_points(a0, a1, a2, degree)?;
+        let c = t.curve()?;
+        let e =
+            Interpolation::measure(c.points(), a0, &(a1 - a0), &(a2 - a1), a2).within(tolerance)?;
+        Ok((t, c, e))
     }
 
     /// M = s·R(θ).

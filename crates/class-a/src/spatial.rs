@@ -3,7 +3,7 @@
 use bez_core::{BezierCurve, Vector3};
 use nalgebra::Matrix3;
 
-use crate::{ClassAError, class_a_curve};
+use crate::{ClassAError, Interpolation, class_a_curve};
 
 /// A typical spatial Class A curve: M = s·R(u, θ) (eqs. (9)–(12)), first leg L·v₀.
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -134,22 +134,80 @@ impl Setup {
 /// Half-width of the φ range searched: |φ| < π/2 (φ = ±π/2 makes ψ = π).
 const PHI_MAX: f64 = 1.5607963267948966;
 
+/// Grid over (φ, log s) for the Newton starts: 41 × 33 points.
+const GRID: (usize, usize) = (41, 33);
+/// Newton runs from this many best grid points.
+const STARTS: usize = 12;
+/// A Newton run has converged when the chord-direction residual is at most this.
+const CONVERGED: f64 = 1e-12;
+
 impl TypicalSpatial {
     /// Solves the typical spatial curve through α₀, α₃ with end tangents along α₁ − α₀ and
-    /// α₃ − α₂ (eqs. (13)–(15)) by our robust method: a grid over (φ, log s) ∈
-    /// (−π/2, π/2) × [−4, 4] of the chord-direction residual |unit(Σ sʲRʲv₀) − unit(α₃ − α₀)|,
-    /// then damped Newton (finite-difference Jacobian, least squares on the 3-vector residual)
-    /// from the best grid points; the converged solution with the largest Class A margin
-    /// (see [`TypicalSpatial::class_a_margin`]) is returned. L is |α₃ − α₀| / |Σ| (eq. (15) fixes
-    /// only the direction).
+    /// α₃ − α₂ (eqs. (13)–(15)) and returns the converged solution with the largest Class A
+    /// margin ([`TypicalSpatial::class_a_margin`]), provided that margin is ≥ 0.
+    ///
+    /// Method ([`TypicalSpatial::candidates`]): a grid over (φ, log s) ∈ (−π/2, π/2) × [−4, 4] of
+    /// the chord-direction residual |unit(Σ sʲRʲv₀) − unit(α₃ − α₀)|, then damped Newton
+    /// (finite-difference Jacobian, least squares on the 3-vector residual) from the 12 best
+    /// grid points. L is |α₃ − α₀| / |Σ| (eq. (15) fixes only the direction).
+    ///
+    /// Guarantees: every returned curve meets the end conditions to the residual 1e-12 and is
+    /// Class A (Farin's condition (3) for M, or for M⁻¹ when s < 1). Not guaranteed: that every
+    /// solution of the two equations in (φ, s) is found (only those whose Newton basin holds one
+    /// of the starts; solutions with s outside [e⁻⁴, e⁴] are reached only if Newton walks there),
+    /// so [`ClassAError::NoClassASolution`] means no *found* solution is Class A, not that none
+    /// exists.
     ///
     /// # Errors
     /// [`ClassAError::DegreeTooLow`], [`ClassAError::NonFinite`], [`ClassAError::CoincidentPoints`],
-    /// [`ClassAError::ParallelTangents`], [`ClassAError::ChordUnreachable`] (no start converged to a
-    /// residual ≤ 1e-12; e.g. a chord pointing back against both tangents).
+    /// [`ClassAError::ParallelTangents`], [`ClassAError::ChordUnreachable`] (no start converged;
+    /// e.g. a chord pointing back against both tangents), [`ClassAError::NoClassASolution`] (every
+    /// converged solution has a negative Class A margin; [`TypicalSpatial::candidates`] still
+    /// returns them).
     pub fn from_points(a: &[Vector3<f64>; 4], degree: usize) -> Result<Self, ClassAError> {
+        let all = Self::candidates(a, degree)?;
+        match all.first() {
+            Some(best) if best.class_a_margin() >= 0.0 => Ok(*best),
+            Some(best) => Err(ClassAError::NoClassASolution {
+                converged: all.len(),
+                best_margin: best.class_a_margin(),
+                s: best.s,
+                theta: best.theta,
+            }),
+            None => Err(ClassAError::ChordUnreachable {
+                residual: f64::INFINITY,
+            }),
+        }
+    }
+
+    /// [`TypicalSpatial::from_points`], then the curve and its achieved interpolation errors
+    /// ([`Interpolation`]), which must be within `tolerance` (the issue asks for 1e-9).
+    ///
+    /// # Errors
+    /// As [`TypicalSpatial::from_points`] and [`TypicalSpatial::curve`];
+    /// [`ClassAError::ToleranceNotMet`] when the rounded control points cannot meet the end
+    /// conditions.
+    pub fn generate(
+        a: &[Vector3<f64>; 4],
+        degree: usize,
+        tolerance: f64,
+    ) -> Result<(Self, BezierCurve<3>, Interpolation), ClassAError> {
+        let t = Self::from_points(a, degree)?;
+        let c = t.curve()?;
+        let e = Interpolation::measure(c.points(), &a[0], &(a[1] - a[0]), &(a[3] - a[2]), &a[3])
+            .within(tolerance)?;
+        Ok((t, c, e))
+    }
+
+    /// All distinct converged solutions of the end conditions found by the grid + Newton search
+    /// of [`TypicalSpatial::from_points`], Class A or not, sorted by decreasing Class A margin
+    /// (the first is the best candidate).
+    ///
+    /// # Errors
+    /// As [`TypicalSpatial::from_points`], except [`ClassAError::NoClassASolution`].
+    pub fn candidates(a: &[Vector3<f64>; 4], degree: usize) -> Result<Vec<Self>, ClassAError> {
         let setup = Setup::new(a, degree)?;
-        let (np, ns) = (41, 33);
+        let (np, ns) = GRID;
         let mut grid = Vec::with_capacity(np * ns);
         for i in 0..np {
             let phi = -PHI_MAX + 2.0 * PHI_MAX * i as f64 / (np - 1) as f64;
@@ -159,23 +217,26 @@ impl TypicalSpatial {
             }
         }
         grid.sort_by(|x, y| x.0.total_cmp(&y.0));
-        let mut best: Option<(f64, f64, f64, f64)> = None; // (margin, residual, phi, log s)
+        let mut found: Vec<Self> = Vec::new();
         let mut best_res = f64::INFINITY;
-        for &(_, phi, ls) in grid.iter().take(12) {
+        for &(_, phi, ls) in grid.iter().take(STARTS) {
             let (phi, ls, r) = newton(&setup, phi, ls);
             best_res = best_res.min(r);
-            if r <= 1e-12 {
+            if r <= CONVERGED {
                 let t = setup.finish(&a[0], phi, ls.exp())?;
-                let m = t.class_a_margin();
-                if best.is_none_or(|b| m > b.0 + 1e-12) {
-                    best = Some((m, r, phi, ls));
+                let duplicate = found
+                    .iter()
+                    .any(|f| (f.phi - t.phi).abs() <= 1e-9 && (f.s / t.s - 1.0).abs() <= 1e-9);
+                if !duplicate {
+                    found.push(t);
                 }
             }
         }
-        match best {
-            Some((_, _, phi, ls)) => setup.finish(&a[0], phi, ls.exp()),
-            None => Err(ClassAError::ChordUnreachable { residual: best_res }),
+        if found.is_empty() {
+            return Err(ClassAError::ChordUnreachable { residual: best_res });
         }
+        found.sort_by(|x, y| y.class_a_margin().total_cmp(&x.class_a_margin()));
+        Ok(found)
     }
 
     /// The paper's method: Nelder–Mead (argmin) on (φ, s) minimizing −f of eq. (15),

@@ -186,3 +186,48 @@ mod arbitrary_triangles {
         }
     }
 }
+
+#[test]
+fn generation_reports_achieved_interpolation() {
+    // Fig. 6 (n = 49) and random inputs meet 1e-9 with room.
+    let a = cases::fig6_points();
+    let (_, _, e) =
+        TypicalPlanar::generate(&a[0], &a[1], &a[2], 49, INTERPOLATION_TOLERANCE).unwrap();
+    assert!(
+        e.end_tangent <= INTERPOLATION_TOLERANCE && e.end_point <= INTERPOLATION_TOLERANCE,
+        "{e:?}"
+    );
+    for (a, n) in cases::random_planar_inputs(200, 5) {
+        let (_, _, e) =
+            TypicalPlanar::generate(&a[0], &a[1], &a[2], n, INTERPOLATION_TOLERANCE).unwrap();
+        assert!(e.worst().1 <= INTERPOLATION_TOLERANCE, "{e:?}");
+    }
+}
+
+#[test]
+fn tight_turn_at_high_degree_is_a_typed_error() {
+    // α₂ close to α₁ after a turn of 1 rad: s ≪ 1, and at n = 49 the last leg L·s⁴⁸ is far
+    // below the rounding of b₄₉, so the end tangent is not representable to 1e-9.
+    let (a0, a1) = (Vector2::new(0.0, 0.0), Vector2::new(1.0, 0.0));
+    let a2 = a1 + Vector2::new(1.0f64.cos(), 1.0f64.sin()) * 0.01;
+    let t = TypicalPlanar::from_points(&a0, &a1, &a2, 49).unwrap();
+    assert!(t.s < 0.6, "s = {}", t.s);
+    match TypicalPlanar::generate(&a0, &a1, &a2, 49, INTERPOLATION_TOLERANCE) {
+        Err(ClassAError::ToleranceNotMet {
+            condition,
+            achieved,
+            tolerance,
+        }) => {
+            assert_eq!(condition, "end tangent");
+            assert!(achieved > tolerance);
+            // The measured error agrees with the curve built directly.
+            let c = t.curve().unwrap();
+            let e = Interpolation::measure(c.points(), &a0, &(a1 - a0), &(a2 - a1), &a2);
+            assert_eq!(e.end_tangent, achieved);
+        }
+        r => panic!("{r:?}"),
+    }
+    // The same triangle at degree 3 meets the tolerance.
+    let (_, _, e) = TypicalPlanar::generate(&a0, &a1, &a2, 3, INTERPOLATION_TOLERANCE).unwrap();
+    assert!(e.end_tangent <= INTERPOLATION_TOLERANCE, "{e:?}");
+}

@@ -37,7 +37,7 @@ fn random_spatial_inputs_interpolate() {
     for (a, n) in cases::random_spatial_inputs(40, 11) {
         let c = TypicalSpatial::from_points(&a, n).unwrap();
         check(&a, &c);
-        assert!(c.class_a_margin() >= -1e-9, "{}", c.class_a_margin());
+        assert!(c.class_a_margin() >= 0.0, "{}", c.class_a_margin());
     }
 }
 
@@ -249,5 +249,43 @@ fn apollonius_construction_agrees_with_closed_form_pole() {
     assert!(matches!(
         apollonius_pole(&bad),
         Err(ClassAError::NonFinite { .. })
+    ));
+}
+
+#[test]
+fn non_class_a_spatial_input_is_a_typed_error() {
+    // Points of a typical spatial curve with s = 1: inside the forbidden band for every θ ≠ 0.
+    let m = rotation(&Vector3::new(0.3, 0.2, 1.0).normalize(), 0.25);
+    let c = class_a_curve(&Vector3::zeros(), &Vector3::new(1.0, 0.0, 0.2), &m, 6).unwrap();
+    let p = c.points();
+    let a = [p[0], p[1], p[5], p[6]];
+    let e = TypicalSpatial::from_points(&a, 6).unwrap_err();
+    match e {
+        ClassAError::NoClassASolution {
+            converged,
+            best_margin,
+            ..
+        } => assert!(converged >= 1 && best_margin < 0.0),
+        ref e => panic!("{e:?}"),
+    }
+    assert!(e.to_string().contains("no Class A"));
+    // The candidates are still available, and include the generating curve.
+    let all = TypicalSpatial::candidates(&a, 6).unwrap();
+    assert!(all.iter().any(|t| (t.s - 1.0).abs() < 1e-9), "{all:?}");
+    assert!(all.iter().all(|t| t.class_a_margin() < 0.0));
+    check(&a, &all[0]);
+}
+
+#[test]
+fn spatial_generation_reports_achieved_interpolation() {
+    for (a, n) in cases::random_spatial_inputs(20, 3) {
+        let (_, _, e) = TypicalSpatial::generate(&a, n, INTERPOLATION_TOLERANCE).unwrap();
+        assert!(e.worst().1 <= INTERPOLATION_TOLERANCE, "{e:?}");
+    }
+    // An impossible tolerance is reported, not met silently.
+    let a = cases::fig8_points();
+    assert!(matches!(
+        TypicalSpatial::generate(&a, 7, 0.0),
+        Err(ClassAError::ToleranceNotMet { .. })
     ));
 }

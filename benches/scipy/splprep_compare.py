@@ -1,59 +1,60 @@
 """Smoothing cubic B-spline fits (SciPy's splprep) of subdiv-fit's test shapes.
 
-The baseline a user would reach for: `splprep` with the smoothing factor s chosen, by bisection,
-as the largest value whose two-sided max error (data to dense curve samples, curve samples to the
-data polyline, the measure of subdiv-fit's tables) is at most the tolerance 0.01.
-The shapes are re-created from the formulas documented in `subdiv_fit::cases`.
-Run with `benches/scipy/run.sh`, which installs NumPy and SciPy into a private virtual
-environment; `cargo test` never needs this.
+The baseline a user would reach for: `splprep` (cubic, periodic for closed data) with the
+smoothing factor s chosen, by bisection, as the largest value whose two-sided max error (data to
+dense curve samples, curve samples to the data polyline, the measure of subdiv-fit's tables) is at
+most the tolerance.
+
+Run by `cargo xtask scipy`, which installs NumPy and SciPy into a private virtual environment,
+writes the shapes (from `subdiv_fit::cases`) as JSON, runs this script with
+`python splprep_compare.py SHAPES.json TOLERANCE REPETITIONS`, and reads the JSON it prints:
+one object per shape with the smoothing factor, the number of B-spline control points, the
+two-sided error and the median time of one `splprep` call at that smoothing factor.
+`cargo test` and `cargo xtask tables` never need this.
 """
 
+import json
 import math
+import statistics
 import sys
 import time
 
 import numpy as np
 from scipy.interpolate import splev, splprep
-
-TOL = 0.01
-
-
-def normalize(p):
-    lo = p.min(axis=0)
-    side = (p.max(axis=0) - lo).max()
-    return (p - lo) / side
+from scipy.spatial import cKDTree
 
 
-def closed_petals(density=1):
-    n = 64 * density
-    t = 2 * math.pi * np.arange(n) / n
-    r = 1 + 0.4 * np.abs(np.sin(2 * t)) + 0.1 * np.cos(5 * t + 0.3)
-    return normalize(np.stack([r * np.cos(t), r * np.sin(t)], axis=1))
-
-
-def open_wave(density=1):
-    m = 65 * density
-    x = np.arange(m + 1) / m
-    y = 0.2 * np.sin(5 * math.pi * x) + 0.8 * (np.abs(x - 22 / 65) + np.abs(x - 44 / 65))
-    return normalize(np.stack([x, y], axis=1))
-
-
-def point_polyline(points, poly):
-    """Distance from each point to the polyline (vectorized over segments)."""
-    a = poly[:-1][None, :, :]
-    e = (poly[1:] - poly[:-1])[None, :, :]
-    q = points[:, None, :]
-    len2 = np.maximum((e * e).sum(-1), 1e-300)
-    s = np.clip(((q - a) * e).sum(-1) / len2, 0, 1)
-    d = np.linalg.norm(q - (a + e * s[..., None]), axis=-1)
-    return d.min(axis=1)
+def point_polyline(points, poly, candidates=8):
+    """Distance from each point to the polyline: exact distances to the segments next to the
+    `candidates` nearest polyline vertices (a KD-tree query), which holds the nearest segment for
+    polylines whose segments are short against the distances of interest, as here."""
+    tree = cKDTree(poly)
+    k = min(candidates, len(poly))
+    _, idx = tree.query(points, k=k)
+    idx = idx.reshape(len(points), k)
+    best = np.full(len(points), np.inf)
+    cand = np.concatenate([idx - 1, idx], axis=1).clip(0, len(poly) - 2)
+    for c in range(cand.shape[1]):
+        a = poly[cand[:, c]]
+        e = poly[cand[:, c] + 1] - a
+        len2 = np.maximum((e * e).sum(-1), 1e-300)
+        t = np.clip(((points - a) * e).sum(-1) / len2, 0, 1)
+        best = np.minimum(best, np.linalg.norm(points - (a + e * t[:, None]), axis=-1))
+    return best
 
 
 def two_sided(tck, data, closed):
-    u = np.linspace(0, 1, 64 * len(data) + 1)
+    """Data to dense curve samples (64 per knot span, the sampling of the Rust side), and the
+    samples to the data polyline."""
+    knots = np.unique(tck[0][3:-3])
+    u = np.concatenate(
+        [np.linspace(a, b, 64, endpoint=False) for a, b in zip(knots[:-1], knots[1:])] + [knots[-1:]]
+    )
     samples = np.stack(splev(u, tck), axis=1)
     poly = np.vstack([data, data[:1]]) if closed else data
-    return max(point_polyline(data, samples).max(), point_polyline(samples, poly).max())
+    d2c = point_polyline(data, samples).max()
+    c2d = point_polyline(samples, poly).max()
+    return max(d2c, c2d)
 
 
 def fit(data, closed, s):
@@ -62,27 +63,43 @@ def fit(data, closed, s):
     return tck
 
 
-def main():
-    print("| shape | points | smoothing s | B-spline control points | two-sided max error | time (ms) |")
-    print("|---|---|---|---|---|---|")
-    for name, make, closed in [("closed petals", closed_petals, True), ("open wave", open_wave, False)]:
-        for density in (1, 10):
-            data = make(density)
-            lo, hi = 1e-12, 1.0
-            for _ in range(50):
-                mid = math.sqrt(lo * hi)
-                if two_sided(fit(data, closed, mid), data, closed) <= TOL:
-                    lo = mid
-                else:
-                    hi = mid
-            start = time.perf_counter()
-            tck = fit(data, closed, lo)
-            ms = (time.perf_counter() - start) * 1e3
-            coefs = len(tck[1][0]) - (3 if closed else 0)
-            err = two_sided(tck, data, closed)
-            print(f"| {name} | {len(data)} | {lo:.3e} | {coefs} | {err:.5f} | {ms:.2f} |")
+def compare(shape, tol, reps):
+    data = np.asarray(shape["points"], dtype=float)
+    closed = shape["closed"]
+    lo, hi = 1e-12, 1.0
+    for _ in range(50):
+        mid = math.sqrt(lo * hi)
+        if two_sided(fit(data, closed, mid), data, closed) <= tol:
+            lo = mid
+        else:
+            hi = mid
+    times = []
+    for _ in range(max(reps, 1)):
+        start = time.perf_counter()
+        tck = fit(data, closed, lo)
+        times.append((time.perf_counter() - start) * 1e3)
+    return {
+        "shape": shape["name"],
+        "density": shape["density"],
+        "points": len(data),
+        "smoothing": lo,
+        # A periodic fit repeats its first 3 coefficients at the end.
+        "control_points": len(tck[1][0]) - (3 if closed else 0),
+        "error": float(two_sided(tck, data, closed)),
+        "time_ms": statistics.median(times),
+    }
+
+
+def main(argv):
+    if len(argv) != 4:
+        print(__doc__, file=sys.stderr)
+        return 2
+    with open(argv[1], encoding="utf-8") as f:
+        shapes = json.load(f)
+    tol, reps = float(argv[2]), int(argv[3])
+    json.dump([compare(s, tol, reps) for s in shapes], sys.stdout)
     return 0
 
 
 if __name__ == "__main__":
-    sys.exit(main())
+    sys.exit(main(sys.argv))

@@ -5,6 +5,8 @@
 //!   deterministic values with the committed JSON instead and fails with a readable diff.
 //! - `cargo xtask figures [--only PAPER]` writes the papers' figures as SVG to `docs/figures/`.
 //! - `cargo xtask cad-check` reads pde-bezier's STEP and IGES export with Open CASCADE.
+//! - `cargo xtask scipy` compares subdiv-fit with SciPy's `splprep` and writes
+//!   `docs/results/subdiv-fit-scipy.md` and `.json` (optional, needs Python 3).
 #![allow(
     clippy::print_stdout,
     clippy::print_stderr,
@@ -16,6 +18,7 @@ mod figures;
 mod papers;
 mod plot;
 mod tables;
+mod venv;
 
 use std::path::PathBuf;
 use std::process::ExitCode;
@@ -51,6 +54,7 @@ fn try_main() -> Result<(), DynError> {
         "tables" => tables::run(check, only),
         "figures" if !check => figures::run(only),
         "cad-check" if !check && only.is_none() => cad_check::run(),
+        "scipy" if !check && only.is_none() => papers::subdiv_fit_scipy::run(),
         _ => {
             println!("{HELP}");
             Ok(())
@@ -62,6 +66,7 @@ const HELP: &str = "usage:
   cargo xtask tables [--check] [--only PAPER]   recompute the papers' tables (--check: compare with docs/results)
   cargo xtask figures [--only PAPER]            write the papers' figures to docs/figures
   cargo xtask cad-check                         read pde-bezier's STEP/IGES export with Open CASCADE (PyPI)
+  cargo xtask scipy                             compare subdiv-fit with SciPy's splprep (PyPI) into docs/results
 papers: bez-subdiv, lambda-bezier, class-a, subdiv-fit, pde-bezier";
 
 /// The workspace root (the parent of this crate's directory).

@@ -12,7 +12,7 @@ use std::ops::Range;
 use kurbo::{BezPath, CurveFitSample, ParamCurve, ParamCurveFit, Point, Vec2, fit_to_bezpath_opt};
 use serde_json::{Value, json};
 use subdiv_fit::cases::{closed_petals, open_wave};
-use subdiv_fit::{FitOptions, Vector2, feature_points, fit, point_polyline_distance};
+use subdiv_fit::{FitOptions, SubdivCurve, Vector2, feature_points, fit, point_polyline_distance};
 
 use super::subdiv_fit::median_ms;
 use crate::DynError;
@@ -105,7 +105,7 @@ fn runs(data: &[Vector2<f64>], closed: bool) -> Vec<Vec<Point>> {
 }
 
 /// Global two-sided distance between sampled curve pieces and the data.
-fn two_sided(samples: &[Vector2<f64>], data: &[Vector2<f64>], closed: bool) -> f64 {
+pub(super) fn two_sided(samples: &[Vector2<f64>], data: &[Vector2<f64>], closed: bool) -> f64 {
     let mut poly = data.to_vec();
     if closed {
         poly.push(data[0]);
@@ -122,6 +122,22 @@ fn two_sided(samples: &[Vector2<f64>], data: &[Vector2<f64>], closed: bool) -> f
 }
 
 const SAMPLES: usize = 64;
+
+/// [`two_sided`] for a fitted subdivision curve, sampled `SAMPLES` times per segment.
+pub(super) fn curve_two_sided(
+    curve: &SubdivCurve<2>,
+    data: &[Vector2<f64>],
+    closed: bool,
+) -> Result<f64, DynError> {
+    let segs = curve.segment_count();
+    let count = segs * SAMPLES;
+    let params: Vec<f64> = (0..=count)
+        .map(|k| k as f64 * segs as f64 / count as f64)
+        .collect();
+    let mut samples = Vec::new();
+    curve.eval_many(&params, &mut samples)?;
+    Ok(two_sided(&samples, data, closed))
+}
 
 /// kurbo's fit of every run at `accuracy` (what the time column measures).
 fn kurbo_paths(runs: &[Vec<Point>], accuracy: f64) -> Vec<BezPath> {
@@ -180,13 +196,7 @@ pub(crate) fn table() -> Result<Table, DynError> {
             };
             let (f, ms) = median_ms(REPS, || Ok(fit(&data, closed, &opts)?))?;
             let segs = f.curve.segment_count();
-            let count = segs * SAMPLES;
-            let params: Vec<f64> = (0..=count)
-                .map(|k| k as f64 * segs as f64 / count as f64)
-                .collect();
-            let mut samples = Vec::new();
-            f.curve.eval_many(&params, &mut samples)?;
-            let err = two_sided(&samples, &data, closed);
+            let err = curve_two_sided(&f.curve, &data, closed)?;
             target = target.min(err);
             writeln!(
                 md,

@@ -1,4 +1,4 @@
-//! The seeded test curves of the Table 1 reproduction.
+//! The seeded test curves of the Table 1 reproduction and of the N* comparison.
 //!
 //! The paper's curves were "drawn interactively with random points" and are not given. We draw
 //! control points uniformly in the unit square with `ChaCha8Rng` seeded by
@@ -41,4 +41,33 @@ pub fn table1_curves() -> Vec<(usize, Vec<BezierCurve<2>>)> {
             )
         })
         .collect()
+}
+
+/// A cubic with a cusp (its hodograph vanishes at t = ½).
+#[must_use]
+pub fn cusp() -> Option<BezierCurve<2>> {
+    let v = Vector2::new;
+    BezierCurve::new(vec![v(0.0, 0.0), v(1.0, 1.0), v(0.0, 1.0), v(1.0, 0.0)]).ok()
+}
+
+/// A cubic with a loop (it crosses itself).
+#[must_use]
+pub fn looped() -> Option<BezierCurve<2>> {
+    let v = Vector2::new;
+    BezierCurve::new(vec![v(0.0, 0.0), v(2.0, 2.0), v(-1.0, 2.0), v(1.0, 0.0)]).ok()
+}
+
+/// The curves of the N* comparison, named: one seeded random curve of degree 3, 12 and 25
+/// (seed 7 + degree), the cusp and the loop.
+#[must_use]
+pub fn nstar_curves() -> Vec<(String, BezierCurve<2>)> {
+    let random = [3usize, 12, 25].into_iter().flat_map(|n| {
+        random_curves(n, 1, 7 + n as u64)
+            .into_iter()
+            .map(move |c| (format!("random, degree {n}"), c))
+    });
+    let special = [("cusp (cubic)", cusp()), ("loop (cubic)", looped())]
+        .into_iter()
+        .filter_map(|(name, c)| c.map(|c| (name.to_owned(), c)));
+    random.chain(special).collect()
 }

@@ -30,6 +30,7 @@
 mod batch;
 mod bound;
 pub mod cases;
+mod chord;
 mod error;
 mod flatten;
 mod guaranteed;
@@ -39,6 +40,7 @@ mod split_rule;
 
 pub use crate::batch::flatten_batch;
 pub use crate::bound::{max_second_difference, wang_depth};
+pub use crate::chord::chord_deviation;
 pub use crate::error::SubdivError;
 pub use crate::flatten::{
     DEFAULT_MAX_DEPTH, DEFAULT_TOLERANCE, FlattenOptions, FlattenStats, Flattening, Piece,

@@ -204,26 +204,6 @@ fn hausdorff(c: &BezierCurve<2>, poly: &[bez_core::Vector2<f64>]) -> Result<f64,
     Ok(h)
 }
 
-/// The test curves of the N* table: seeded random curves of degree 3, 12, 25, a cusp and a loop.
-fn nstar_curves() -> Result<Vec<(String, BezierCurve<2>)>, DynError> {
-    use bez_core::Vector2;
-    let mut out = Vec::new();
-    for n in [3usize, 12, 25] {
-        let c = bez_subdiv::cases::random_curves(n, 1, 7 + n as u64).remove(0);
-        out.push((format!("random, degree {n}"), c));
-    }
-    let v = Vector2::new;
-    out.push((
-        "cusp (cubic)".into(),
-        BezierCurve::new(vec![v(0.0, 0.0), v(1.0, 1.0), v(0.0, 1.0), v(1.0, 0.0)])?,
-    ));
-    out.push((
-        "loop (cubic)".into(),
-        BezierCurve::new(vec![v(0.0, 0.0), v(2.0, 2.0), v(-1.0, 2.0), v(1.0, 0.0)])?,
-    ));
-    Ok(out)
-}
-
 /// Pieces per rule against the lower bound N*, with measured errors (ε = 1e-3 of the size).
 pub(crate) fn nstar_table() -> Result<Table, DynError> {
     let eps = 1e-3;
@@ -236,7 +216,7 @@ pub(crate) fn nstar_table() -> Result<Table, DynError> {
          |---|---|---|---|---|---|---|---|---|---|---|---|\n"
     );
     let mut rows = Vec::new();
-    for (name, c) in nstar_curves()? {
+    for (name, c) in bez_subdiv::cases::nstar_curves() {
         let size = bez_subdiv::curve_size(&c);
         let tol = eps * size;
         let n_star = bez_subdiv::optimal_segment_count(&c, tol)?;

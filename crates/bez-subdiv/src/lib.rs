@@ -39,7 +39,7 @@ mod near_optimal;
 mod split_rule;
 
 pub use crate::batch::flatten_batch;
-pub use crate::bound::{max_second_difference, wang_depth};
+pub use crate::bound::{max_second_difference, wang_depth, wang_segment_count};
 pub use crate::chord::chord_deviation;
 pub use crate::error::SubdivError;
 pub use crate::flatten::{

@@ -1,4 +1,5 @@
-//! Beyond the paper: an a-priori bound on the subdivision depth (after Wang Guo-Zhao, 1984).
+//! Beyond the paper: a-priori bounds on the subdivision depth and on the segment count (after
+//! Wang Guo-Zhao, 1984).
 
 use bez_core::BezierCurve;
 
@@ -35,5 +36,63 @@ pub fn wang_depth(curve: &BezierCurve<2>, tolerance: f64) -> usize {
     } else {
         // log₄ of a finite positive ratio; the cast saturates for absurd inputs.
         ratio.log(4.0).ceil() as usize
+    }
+}
+
+/// Wang's formula: a number N = max(1, ⌈√(n(n − 1) M / (8 tol))⌉) of equal parameter steps
+/// after which the polyline through B(i/N) is within `tolerance` (absolute) of the curve in
+/// Hausdorff distance.
+///
+/// Why: |B''| ≤ n(n − 1) M, and the chord of a parameter interval of length h interpolates B
+/// with error ≤ h²/8 · max|B''| (linear interpolation error, in norm). Each curve point is
+/// within that of its chord's point at the same parameter, and each chord point too. Returns 0
+/// for a tolerance that is not positive and finite.
+#[must_use]
+pub fn wang_segment_count(curve: &BezierCurve<2>, tolerance: f64) -> usize {
+    if !(tolerance.is_finite() && tolerance > 0.0) {
+        return 0;
+    }
+    let n = curve.degree() as f64;
+    let m = max_second_difference(curve);
+    // A finite positive root; the cast saturates for absurd inputs.
+    ((n * (n - 1.0) * m / (8.0 * tolerance)).sqrt().ceil() as usize).max(1)
+}
+
+#[cfg(test)]
+mod tests {
+    use bez_core::Vector2;
+
+    use super::*;
+    use crate::chord::chord_deviation;
+
+    #[test]
+    fn wang_count_is_tight_on_a_parabola() -> Result<(), crate::SubdivError> {
+        // y = 8t(1 − t): M = 8, n(n − 1) M / 8 = 2; one chord deviates by the apex height 2.
+        let c = BezierCurve::new(vec![
+            Vector2::new(0.0, 0.0),
+            Vector2::new(1.0, 4.0),
+            Vector2::new(2.0, 0.0),
+        ])?;
+        assert_eq!(wang_segment_count(&c, 2.0), 1);
+        assert!((chord_deviation(&c, 0.0, 1.0)? - 2.0).abs() < 1e-12);
+        assert_eq!(wang_segment_count(&c, 1.99), 2);
+        assert_eq!(wang_segment_count(&c, 0.0), 0);
+        Ok(())
+    }
+
+    #[test]
+    fn uniform_steps_of_wang_count_are_within_tolerance() -> Result<(), crate::SubdivError> {
+        for degree in [3, 7, 12, 25] {
+            for c in crate::cases::random_curves(degree, 3, 40 + degree as u64) {
+                for tol in [1e-2, 1e-3] {
+                    let count = wang_segment_count(&c, tol);
+                    for i in 0..count {
+                        let (a, b) = (i as f64 / count as f64, (i + 1) as f64 / count as f64);
+                        assert!(chord_deviation(&c, a, b)? <= tol, "degree {degree}");
+                    }
+                }
+            }
+        }
+        Ok(())
     }
 }

@@ -1,4 +1,4 @@
-//! The seeded test curves of the Table 1 reproduction.
+//! The seeded test curves of the Table 1 reproduction and of the N* comparison.
 //!
 //! The paper's curves were "drawn interactively with random points" and are not given. We draw
 //! control points uniformly in the unit square with `ChaCha8Rng` seeded by
@@ -47,27 +47,45 @@ pub fn table1_curves() -> Vec<(usize, Vec<BezierCurve<2>>)> {
 pub const PEER_SEED: u64 = 2011;
 
 /// The cubics flattened side by side with other libraries (benchmarks and the peer table):
-/// three seeded random cubics (control points uniform in [0, 1]², seed [`PEER_SEED`]), a cusp
-/// and a loop, with their names.
+/// three seeded random cubics (control points uniform in [0, 1]², seed [`PEER_SEED`]), the
+/// [`cusp`] and the [`looped`] cubic, with their names.
 #[must_use]
 pub fn peer_cubics() -> Vec<(String, BezierCurve<2>)> {
-    let mut out: Vec<(String, BezierCurve<2>)> = random_curves(3, 3, PEER_SEED)
+    let random = random_curves(3, 3, PEER_SEED)
         .into_iter()
         .enumerate()
-        .map(|(k, c)| (format!("random cubic {}", k + 1), c))
-        .collect();
+        .map(|(k, c)| (format!("random cubic {}", k + 1), c));
+    let special = [("cusp", cusp()), ("loop", looped())]
+        .into_iter()
+        .filter_map(|(name, c)| c.map(|c| (name.to_owned(), c)));
+    random.chain(special).collect()
+}
+
+/// A cubic with a cusp (its hodograph vanishes at t = ½).
+#[must_use]
+pub fn cusp() -> Option<BezierCurve<2>> {
     let v = Vector2::new;
-    let named = [
-        ("cusp", [v(0.0, 0.0), v(1.0, 1.0), v(0.0, 1.0), v(1.0, 0.0)]),
-        (
-            "loop",
-            [v(0.0, 0.0), v(2.0, 2.0), v(-1.0, 2.0), v(1.0, 0.0)],
-        ),
-    ];
-    for (name, points) in named {
-        if let Ok(c) = BezierCurve::new(points.to_vec()) {
-            out.push((name.into(), c));
-        }
-    }
-    out
+    BezierCurve::new(vec![v(0.0, 0.0), v(1.0, 1.0), v(0.0, 1.0), v(1.0, 0.0)]).ok()
+}
+
+/// A cubic with a loop (it crosses itself).
+#[must_use]
+pub fn looped() -> Option<BezierCurve<2>> {
+    let v = Vector2::new;
+    BezierCurve::new(vec![v(0.0, 0.0), v(2.0, 2.0), v(-1.0, 2.0), v(1.0, 0.0)]).ok()
+}
+
+/// The curves of the N* comparison, named: one seeded random curve of degree 3, 12 and 25
+/// (seed 7 + degree), the cusp and the loop.
+#[must_use]
+pub fn nstar_curves() -> Vec<(String, BezierCurve<2>)> {
+    let random = [3usize, 12, 25].into_iter().flat_map(|n| {
+        random_curves(n, 1, 7 + n as u64)
+            .into_iter()
+            .map(move |c| (format!("random, degree {n}"), c))
+    });
+    let special = [("cusp (cubic)", cusp()), ("loop (cubic)", looped())]
+        .into_iter()
+        .filter_map(|(name, c)| c.map(|c| (name.to_owned(), c)));
+    random.chain(special).collect()
 }

@@ -30,6 +30,7 @@
 mod batch;
 mod bound;
 pub mod cases;
+mod chord;
 mod error;
 mod fixed;
 mod flatten;
@@ -39,7 +40,8 @@ mod near_optimal;
 mod split_rule;
 
 pub use crate::batch::flatten_batch;
-pub use crate::bound::{max_second_difference, wang_depth};
+pub use crate::bound::{max_second_difference, wang_depth, wang_segment_count};
+pub use crate::chord::chord_deviation;
 pub use crate::error::SubdivError;
 pub use crate::fixed::flatten_fixed_into;
 pub use crate::flatten::{

@@ -1,9 +1,8 @@
 //! Beyond the paper: near-optimal flattening by the curvature density √(|κ| / (8 tol)).
 
-use bez_core::{
-    BezierCurve, Vector2, bernstein_derivative_coeffs, eval_bernstein_poly, roots_in_unit_interval,
-};
+use bez_core::{BezierCurve, Vector2};
 
+use crate::chord::chord_deviation;
 use crate::error::SubdivError;
 use crate::guaranteed::FlatPoint;
 
@@ -59,105 +58,161 @@ fn density_integral(
     Ok((ts, cumulative))
 }
 
-/// Whether the piece of `curve` on [a, b] lies within `tol` of the chord segment B(a)B(b),
-/// exactly: the signed distance to the chord line and the projection onto it are polynomials
-/// in Bernstein form (coefficients from the piece's control points), maximized at their end
-/// points or at the roots of their derivatives.
-fn piece_within(curve: &BezierCurve<2>, a: f64, b: f64, tol: f64) -> bool {
-    let Ok(piece) = curve.subsegment(a, b) else {
-        return false;
-    };
-    let (p0, p1) = (piece.start(), piece.end());
-    let d = p1 - p0;
-    let len = d.norm();
-    if len == 0.0 {
-        return piece.points().iter().all(|p| (p - p0).norm() <= tol);
-    }
-    let u = d / len;
-    let dist: Vec<f64> = piece
-        .points()
-        .iter()
-        .map(|p| u.x * (p.y - p0.y) - u.y * (p.x - p0.x))
-        .collect();
-    let proj: Vec<f64> = piece.points().iter().map(|p| u.dot(&(p - p0))).collect();
-    // Values at the end points and at every stationary point bound the polynomial's range.
-    let range = |c: &[f64]| {
-        roots_in_unit_interval(&bernstein_derivative_coeffs(c))
-            .into_iter()
-            .chain([0.0, 1.0])
-            .map(|t| eval_bernstein_poly(c, t))
-            .fold((f64::INFINITY, f64::NEG_INFINITY), |(lo, hi), v| {
-                (lo.min(v), hi.max(v))
-            })
-    };
-    let (dlo, dhi) = range(&dist);
-    let (plo, phi) = range(&proj);
-    // A point at perpendicular offset ≤ d whose projection overshoots the chord by ≤ o is
-    // within √(d² + o²) of the segment.
-    let d = dlo.abs().max(dhi.abs());
-    let o = (-plo).max(phi - len).max(0.0);
-    d.hypot(o) <= tol
+/// A step is accepted once its exact deviation reaches this fraction of the tolerance.
+const ACCEPT_FRACTION: f64 = 0.98;
+/// Step searches stop refining after this many deviation evaluations (once a step passed).
+const MAX_STEP_EVALUATIONS: usize = 12;
+
+/// The cumulative density integral on its grid, and its inversion.
+struct Density {
+    ts: Vec<f64>,
+    cumulative: Vec<f64>,
 }
 
-/// Points B(tᵢ) placed by the density √(|κ|/(8 tol)) |B'(t)|: ⌈N*⌉ segments at equal steps of
-/// the integral, then every segment is verified exactly (distance to its chord segment ≤ tol,
-/// see `piece_within`) and halved until it passes, so the result has the same Hausdorff
-/// guarantee as [`crate::flatten_guaranteed`] with close to the minimal number of points.
+impl Density {
+    /// ∫₀ᵗ of the density (linear between grid nodes).
+    fn at(&self, t: f64) -> f64 {
+        let k = self
+            .ts
+            .partition_point(|&x| x < t)
+            .clamp(1, self.ts.len() - 1);
+        let (t0, t1) = (self.ts[k - 1], self.ts[k]);
+        let w = ((t - t0) / (t1 - t0)).clamp(0.0, 1.0);
+        self.cumulative[k - 1] + w * (self.cumulative[k] - self.cumulative[k - 1])
+    }
+
+    /// The parameter where the integral reaches `target` (1 beyond the total).
+    fn inverse(&self, target: f64) -> f64 {
+        let k = self.cumulative.partition_point(|&c| c < target);
+        if k == 0 {
+            return 0.0;
+        }
+        if k >= self.ts.len() {
+            return 1.0;
+        }
+        let (c0, c1) = (self.cumulative[k - 1], self.cumulative[k]);
+        let w = if c1 > c0 {
+            (target - c0) / (c1 - c0)
+        } else {
+            0.0
+        };
+        self.ts[k - 1] + w * (self.ts[k] - self.ts[k - 1])
+    }
+}
+
+/// The longest step [a, b] found whose exact chord deviation is ≤ `tol`, starting from the
+/// guess `b`: the deviation of a short arc grows like (b − a)², so the next guess scales the
+/// step by √(tol / deviation); failed and passed steps bracket the answer, and a guess outside
+/// the bracket is replaced by its midpoint. Stops at a deviation in [0.98 tol, tol] or after
+/// [`MAX_STEP_EVALUATIONS`]. Returns `None` when no step longer than `min_step` passes.
+fn longest_step(
+    curve: &BezierCurve<2>,
+    a: f64,
+    guess: f64,
+    tol: f64,
+    min_step: f64,
+) -> Result<Option<f64>, SubdivError> {
+    let mut lo = a;
+    let mut hi = 1.0_f64;
+    let mut hi_failed = false;
+    let mut b = guess.max(a + min_step).min(1.0);
+    for evaluation in 1.. {
+        let e = chord_deviation(curve, a, b)?;
+        let h = b - a;
+        let next = if e <= tol {
+            lo = b;
+            if e >= ACCEPT_FRACTION * tol || b == 1.0 || evaluation >= MAX_STEP_EVALUATIONS {
+                break;
+            }
+            // Aim just below the tolerance; a straight arc (e = 0) doubles the step.
+            let scale = if e > 0.0 {
+                (0.99 * tol / e).sqrt()
+            } else {
+                2.0
+            };
+            a + h * scale.max(1.01)
+        } else {
+            hi = b;
+            hi_failed = true;
+            // A failed step shrinks by at least 10 %, so the search ends (see `min_step`).
+            let scale = if e.is_finite() {
+                (0.99 * tol / e).sqrt()
+            } else {
+                0.5
+            };
+            a + h * scale.min(0.9)
+        };
+        if lo > a && evaluation >= MAX_STEP_EVALUATIONS {
+            break;
+        }
+        b = if next > lo && next < hi {
+            next
+        } else if hi_failed {
+            0.5 * (lo + hi)
+        } else {
+            1.0
+        };
+        if lo == a && (b <= a || b - a < min_step) {
+            return Ok(None);
+        }
+        if lo > a && (hi - lo) <= 1e-12 * (hi - a) {
+            break;
+        }
+    }
+    Ok(Some(lo))
+}
+
+/// Points B(tᵢ) with close to the fewest segments whose polyline is within `tolerance` of the
+/// curve in Hausdorff distance.
 ///
-/// Cost: O(n² m) for the density (m = 64 n nodes) plus O(n²) per verified segment.
+/// A greedy march from t = 0: each segment is the longest step [a, b] found whose exact chord
+/// deviation ([`chord_deviation`]) is ≤ `tolerance`, so the result has the same Hausdorff
+/// guarantee as [`crate::flatten_guaranteed`]. The first guess of each step comes from the
+/// density √(|κ| / (8 tol)) |B'(t)| of the lower bound N* ([`optimal_segment_count`]): the
+/// step advances the density integral by as much as the previous accepted step did (1 at the
+/// start), which tracks how far the true deviation departs from the asymptotic model κh²/8
+/// (near inflections and where κ varies fast within a step). Taking the longest admissible
+/// step each time uses the fewest segments whenever a sub-arc of an admissible arc is
+/// admissible (the greedy rule "stays ahead" of any other placement).
+///
+/// Cost: O(n² m) for the density (m = 64 n nodes) plus a few O(n²) deviation evaluations per
+/// segment (each a sub-curve and two root isolations of degree n − 1).
 ///
 /// # Errors
 /// [`SubdivError::InvalidTolerance`], [`SubdivError::TooFewPoints`], [`SubdivError::DepthLimit`]
-/// when a segment fails after `max_depth` halvings.
+/// when no step longer than 2^−`max_depth` in parameter passes (a tolerance below the rounding
+/// level of the coordinates).
 pub fn flatten_near_optimal(
     curve: &BezierCurve<2>,
     tolerance: f64,
     max_depth: usize,
 ) -> Result<Vec<FlatPoint>, SubdivError> {
     let (ts, cumulative) = density_integral(curve, tolerance)?;
-    let total = cumulative.last().copied().unwrap_or(0.0);
-    let count = total.ceil().max(1.0) as usize;
-    let mut params = vec![0.0];
-    let mut k = 1;
-    for i in 1..count {
-        let target = total * i as f64 / count as f64;
-        while k < ts.len() - 1 && cumulative[k] < target {
-            k += 1;
-        }
-        let (c0, c1) = (cumulative[k - 1], cumulative[k]);
-        let w = if c1 > c0 {
-            (target - c0) / (c1 - c0)
-        } else {
-            0.0
-        };
-        let t = ts[k - 1] + w * (ts[k] - ts[k - 1]);
-        if t > *params.last().unwrap_or(&0.0) && t < 1.0 {
-            params.push(t);
-        }
-    }
-    params.push(1.0);
+    let density = Density { ts, cumulative };
+    let min_step = 0.5_f64.powi(i32::try_from(max_depth).unwrap_or(i32::MAX));
     let mut out = vec![FlatPoint {
         t: 0.0,
         point: curve.start(),
     }];
-    for w in params.windows(2) {
-        let mut stack = vec![(w[0], w[1], 0usize)];
-        while let Some((a, b, depth)) = stack.pop() {
-            if piece_within(curve, a, b, tolerance) {
-                let point = if b == 1.0 {
-                    curve.end()
-                } else {
-                    curve.eval(b)?
-                };
-                out.push(FlatPoint { t: b, point });
-            } else if depth >= max_depth {
-                return Err(SubdivError::DepthLimit { limit: max_depth });
-            } else {
-                let m = 0.5 * (a + b);
-                stack.push((m, b, depth + 1));
-                stack.push((a, m, depth + 1));
-            }
+    let mut a = 0.0_f64;
+    let mut advance = 1.0_f64;
+    while a < 1.0 {
+        let from = density.at(a);
+        let guess = density.inverse(from + advance);
+        let Some(b) = longest_step(curve, a, guess, tolerance, min_step)? else {
+            return Err(SubdivError::DepthLimit { limit: max_depth });
+        };
+        let step_advance = density.at(b) - from;
+        if step_advance > 0.0 && b < 1.0 {
+            advance = step_advance;
         }
+        let point = if b == 1.0 {
+            curve.end()
+        } else {
+            curve.eval(b)?
+        };
+        out.push(FlatPoint { t: b, point });
+        a = b;
     }
     Ok(out)
 }

@@ -251,4 +251,36 @@ mod tests {
         let c = SplitRule::flatness().choose(&p, 0, true).unwrap();
         assert_eq!(c.evaluations, 13);
     }
+
+    #[test]
+    fn adaptive_levels_optimize_until_the_optimum_is_near_one_half() {
+        let rule = SplitRule::Optimal {
+            objective: Objective::Flatness,
+            search: Search::Grid,
+            levels: Levels::Adaptive,
+        };
+        // Lopsided: the flatness optimum is far from ½ and the search goes on at any depth.
+        let lopsided = [
+            Vector2::new(0.0, 0.0),
+            Vector2::new(0.2, 4.0),
+            Vector2::new(0.4, 0.0),
+            Vector2::new(6.0, 0.0),
+        ];
+        let c = rule.choose(&lopsided, 10, true).unwrap();
+        assert!(
+            (c.t - 0.5).abs() > ADAPTIVE_BAND && c.keep_searching,
+            "{c:?}"
+        );
+        // Symmetric: the optimum is ½ (Property 2.2), so the descendants stop searching.
+        let symmetric = [
+            Vector2::new(0.0, 0.0),
+            Vector2::new(1.0, 3.0),
+            Vector2::new(3.0, 3.0),
+            Vector2::new(4.0, 0.0),
+        ];
+        let c = rule.choose(&symmetric, 0, true).unwrap();
+        assert!(c.t == 0.5 && !c.keep_searching, "{c:?}");
+        let c = rule.choose(&lopsided, 0, false).unwrap();
+        assert_eq!((c.t, c.evaluations), (0.5, 0));
+    }
 }

@@ -8,52 +8,21 @@
 
 use bez_core::proptest_support::curve;
 use bez_core::{BezierCurve, Vector2};
+mod common;
+
+use common::hausdorff;
+
 use bez_subdiv::{
-    FlattenOptions, distance_to_segment, flatten, flatten_guaranteed, flatten_near_optimal,
-    optimal_segment_count,
+    FlattenOptions, flatten, flatten_guaranteed, flatten_near_optimal, optimal_segment_count,
 };
 use proptest::prelude::*;
 
-/// max over dense curve samples of the distance to the polyline, and max over dense polyline
-/// samples of the distance to the curve (exact nearest point).
-fn hausdorff(c: &BezierCurve<2>, poly: &[Vector2<f64>]) -> f64 {
-    let mut h = 0.0_f64;
-    for k in 0..=3000 {
-        let p = c.eval(f64::from(k) / 3000.0).unwrap();
-        let d = poly
-            .windows(2)
-            .map(|w| distance_to_segment(&p, &w[0], &w[1]))
-            .fold(f64::INFINITY, f64::min);
-        h = h.max(d);
-    }
-    for w in poly.windows(2) {
-        for k in 0..=8 {
-            let s = f64::from(k) / 8.0;
-            let q = w[0] * (1.0 - s) + w[1] * s;
-            h = h.max(c.nearest(&q).unwrap().distance);
-        }
-    }
-    h
-}
-
 fn cusp() -> BezierCurve<2> {
-    BezierCurve::new(vec![
-        Vector2::new(0.0, 0.0),
-        Vector2::new(1.0, 1.0),
-        Vector2::new(0.0, 1.0),
-        Vector2::new(1.0, 0.0),
-    ])
-    .unwrap()
+    bez_subdiv::cases::cusp().unwrap()
 }
 
 fn looped() -> BezierCurve<2> {
-    BezierCurve::new(vec![
-        Vector2::new(0.0, 0.0),
-        Vector2::new(2.0, 2.0),
-        Vector2::new(-1.0, 2.0),
-        Vector2::new(1.0, 0.0),
-    ])
-    .unwrap()
+    bez_subdiv::cases::looped().unwrap()
 }
 
 #[test]

@@ -11,6 +11,9 @@ use serde_json::json;
 use crate::DynError;
 use crate::tables::Table;
 
+mod nstar;
+pub(super) use nstar::hausdorff;
+
 /// The paper's Table 1, as printed: degree, then (time s, iterations) for the fixed, flatness
 /// and hull methods, then the printed improvement rates (%) of the flatness and hull methods.
 const PAPER: [(usize, [f64; 6], [f64; 2]); 10] = [
@@ -29,7 +32,8 @@ const PAPER: [(usize, [f64; 6], [f64; 2]); 10] = [
 /// Repetitions for the median time of one flattening.
 const REPS: usize = 5;
 
-fn rules() -> [SplitRule; 5] {
+/// The rules of Table 1: the paper's three, the exact optimum and the adaptive N.
+pub(super) fn rules() -> [SplitRule; 5] {
     [
         SplitRule::Fixed,
         SplitRule::flatness(),
@@ -180,122 +184,6 @@ pub(crate) fn tables() -> Result<Vec<Table>, DynError> {
             markdown: md,
             checked: json!({ "rows": rows_json }),
         },
-        nstar_table()?,
+        nstar::nstar_table()?,
     ])
-}
-
-/// Max distance both ways between a curve and a polyline: dense curve samples to the polyline,
-/// polyline samples to the curve (exact nearest points).
-pub(super) fn hausdorff(
-    c: &BezierCurve<2>,
-    poly: &[bez_core::Vector2<f64>],
-) -> Result<f64, DynError> {
-    let mut h = 0.0_f64;
-    for p in c.sample_uniform(20_001) {
-        let d = poly
-            .windows(2)
-            .map(|w| bez_subdiv::distance_to_segment(&p, &w[0], &w[1]))
-            .fold(f64::INFINITY, f64::min);
-        h = h.max(d);
-    }
-    for w in poly.windows(2) {
-        for k in 0..=4 {
-            let s = f64::from(k) / 4.0;
-            h = h.max(c.nearest(&(w[0] * (1.0 - s) + w[1] * s))?.distance);
-        }
-    }
-    Ok(h)
-}
-
-/// The test curves of the N* table: seeded random curves of degree 3, 12, 25, a cusp and a loop.
-fn nstar_curves() -> Result<Vec<(String, BezierCurve<2>)>, DynError> {
-    use bez_core::Vector2;
-    let mut out = Vec::new();
-    for n in [3usize, 12, 25] {
-        let c = bez_subdiv::cases::random_curves(n, 1, 7 + n as u64).remove(0);
-        out.push((format!("random, degree {n}"), c));
-    }
-    let v = Vector2::new;
-    out.push((
-        "cusp (cubic)".into(),
-        BezierCurve::new(vec![v(0.0, 0.0), v(1.0, 1.0), v(0.0, 1.0), v(1.0, 0.0)])?,
-    ));
-    out.push((
-        "loop (cubic)".into(),
-        BezierCurve::new(vec![v(0.0, 0.0), v(2.0, 2.0), v(-1.0, 2.0), v(1.0, 0.0)])?,
-    ));
-    Ok(out)
-}
-
-/// Pieces per rule against the lower bound N*, with measured errors (ε = 1e-3 of the size).
-pub(crate) fn nstar_table() -> Result<Table, DynError> {
-    let eps = 1e-3;
-    let mut md = format!(
-        "### bez-subdiv: segments against the lower bound N* = ∫ √(|κ|/(8 tol)) ds (tol = {eps} × size)\n\n\
-         Eq. (3) rules: final pieces (each is a control polygon of n segments; the chord polyline through their end points is measured).\n\
-         Guaranteed and near-optimal: polyline segments through curve points.\n\
-         Error: measured Hausdorff distance (20,001 curve samples, exact nearest points) divided by tol.\n\n\
-         | curve | N* | fixed | flatness | hull | flatness exact | guaranteed | near-optimal | fixed err/tol | guaranteed err/tol | near-optimal err/tol | Wang depth / fixed depth |\n\
-         |---|---|---|---|---|---|---|---|---|---|---|---|\n"
-    );
-    let mut rows = Vec::new();
-    for (name, c) in nstar_curves()? {
-        let size = bez_subdiv::curve_size(&c);
-        let tol = eps * size;
-        let n_star = bez_subdiv::optimal_segment_count(&c, tol)?;
-        let mut pieces = Vec::new();
-        let mut fixed_err = 0.0;
-        let mut fixed_depth = 0;
-        for rule in rules().into_iter().take(4) {
-            let f = flatten(
-                &c,
-                &FlattenOptions {
-                    tolerance: eps,
-                    rule,
-                    ..FlattenOptions::default()
-                },
-            )?;
-            if rule == SplitRule::Fixed {
-                let chords: Vec<_> = std::iter::once(c.start())
-                    .chain(f.pieces.iter().filter_map(|p| p.points.last().copied()))
-                    .collect();
-                fixed_err = hausdorff(&c, &chords)? / tol;
-                fixed_depth = f.stats.depth;
-            }
-            pieces.push(f.stats.pieces);
-        }
-        let g = bez_subdiv::flatten_guaranteed(&c, tol, 40)?;
-        let o = bez_subdiv::flatten_near_optimal(&c, tol, 40)?;
-        let gp: Vec<_> = g.iter().map(|p| p.point).collect();
-        let op: Vec<_> = o.iter().map(|p| p.point).collect();
-        let (ge, oe) = (hausdorff(&c, &gp)? / tol, hausdorff(&c, &op)? / tol);
-        let wang = bez_subdiv::wang_depth(&c, eps);
-        let r = |k: usize| k as f64 / n_star;
-        let _ = writeln!(
-            md,
-            "| {name} | {n_star:.1} | {} ({:.2}) | {} ({:.2}) | {} ({:.2}) | {} ({:.2}) | {} ({:.2}) | {} ({:.2}) | {fixed_err:.2} | {ge:.2} | {oe:.2} | {wang} / {fixed_depth} |",
-            pieces[0],
-            r(pieces[0]),
-            pieces[1],
-            r(pieces[1]),
-            pieces[2],
-            r(pieces[2]),
-            pieces[3],
-            r(pieces[3]),
-            g.len() - 1,
-            r(g.len() - 1),
-            o.len() - 1,
-            r(o.len() - 1),
-        );
-        rows.push(json!({
-            "curve": name, "n_star": n_star, "pieces": pieces, "guaranteed": g.len() - 1, "near_optimal": o.len() - 1,
-            "fixed_error_over_tol": fixed_err, "guaranteed_error_over_tol": ge, "near_optimal_error_over_tol": oe,
-            "wang_depth": wang, "fixed_depth": fixed_depth,
-        }));
-    }
-    Ok(Table {
-        name: "bez-subdiv-nstar".into(),
-        markdown: md,
-        checked: json!({ "rows": rows }),
-    })
 }

@@ -1,0 +1,59 @@
+//! The near-optimal flattening stays within 1.15 N* segments (N* the asymptotic lower bound)
+//! with a measured Hausdorff error ≤ tol, on the N* table's curves and on a wider seeded set.
+#![allow(
+    clippy::unwrap_used,
+    clippy::expect_used,
+    reason = "tests fail loudly on unexpected errors"
+)]
+
+mod common;
+
+use bez_core::BezierCurve;
+use bez_subdiv::cases::{cusp, looped, nstar_curves, random_curves};
+use bez_subdiv::{curve_size, flatten_near_optimal, optimal_segment_count};
+use common::hausdorff;
+
+/// Segments and N* of the near-optimal flattening at `eps` × size, after checking the measured
+/// Hausdorff error.
+fn segments_and_bound(c: &BezierCurve<2>, eps: f64) -> (f64, f64) {
+    let tol = eps * curve_size(c);
+    let n_star = optimal_segment_count(c, tol).unwrap();
+    let pts = flatten_near_optimal(c, tol, 40).unwrap();
+    assert!(pts.windows(2).all(|w| w[0].t < w[1].t));
+    let poly: Vec<_> = pts.iter().map(|p| p.point).collect();
+    let err = hausdorff(c, &poly);
+    assert!(err <= tol * (1.0 + 1e-9), "error {err} > tol {tol}");
+    ((pts.len() - 1) as f64, n_star)
+}
+
+#[test]
+fn within_1_15_n_star_on_the_table_curves() {
+    for (name, c) in nstar_curves() {
+        let (segments, n_star) = segments_and_bound(&c, 1e-3);
+        assert!(
+            segments <= 1.15 * n_star,
+            "{name}: {segments} segments, N* = {n_star}"
+        );
+    }
+}
+
+/// N* is an asymptotic bound (segments of an arc with curvature κ and length h deviate by κh²/8
+/// as h → 0), and a count is a whole number: when N* is only a few segments, ⌈N*⌉ + 1 can
+/// exceed 1.15 N* (N* = 1.4 needs 2 segments), so the bound is max(1.15 N*, ⌈N*⌉ + 1).
+#[test]
+fn within_1_15_n_star_or_one_more_than_its_ceiling_on_degrees_2_to_30() {
+    let mut curves: Vec<BezierCurve<2>> = (2..=30)
+        .flat_map(|n| random_curves(n, 1, 500 + n as u64))
+        .collect();
+    curves.extend([cusp().unwrap(), looped().unwrap()]);
+    let eps = 2e-3;
+    for (k, c) in curves.iter().enumerate() {
+        let (segments, n_star) = segments_and_bound(c, eps);
+        let bound = (1.15 * n_star).max(n_star.ceil() + 1.0);
+        assert!(
+            segments <= bound,
+            "curve {k} (degree {}): {segments} segments, N* = {n_star}",
+            c.degree()
+        );
+    }
+}

@@ -216,3 +216,75 @@ pub fn flatten_near_optimal(
     }
     Ok(out)
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn curve(points: &[(f64, f64)]) -> BezierCurve<2> {
+        BezierCurve::new(points.iter().map(|&(x, y)| Vector2::new(x, y)).collect())
+            .unwrap_or_else(|_| unreachable!("valid test points"))
+    }
+
+    #[test]
+    fn density_inverse_undoes_the_integral() -> Result<(), SubdivError> {
+        let c = curve(&[(0.0, 0.0), (1.0, 2.0), (3.0, -1.0), (4.0, 1.0)]);
+        let (ts, cumulative) = density_integral(&c, 1e-3)?;
+        let d = Density { ts, cumulative };
+        for t in [0.0, 0.013, 0.4, 0.77, 1.0] {
+            assert!((d.inverse(d.at(t)) - t).abs() < 1e-12, "t = {t}");
+        }
+        assert_eq!(d.inverse(-1.0), 0.0);
+        assert_eq!(d.inverse(1e9), 1.0);
+        Ok(())
+    }
+
+    #[test]
+    fn straight_and_collapsed_curves_are_one_segment() -> Result<(), SubdivError> {
+        let line = curve(&[(0.0, 0.0), (1.0, 1.0), (3.0, 3.0)]);
+        let dot = curve(&[(2.0, 2.0), (2.0, 2.0), (2.0, 2.0)]);
+        for c in [line, dot] {
+            let pts = flatten_near_optimal(&c, 1e-6, 40)?;
+            assert_eq!(pts.iter().map(|p| p.t).collect::<Vec<_>>(), [0.0, 1.0]);
+        }
+        Ok(())
+    }
+
+    #[test]
+    fn every_step_is_exactly_within_tolerance_and_fills_it() -> Result<(), SubdivError> {
+        let c = curve(&[(0.0, 0.0), (1.0, 3.0), (2.0, -2.0), (3.0, 2.0), (4.0, 0.0)]);
+        let tol = 1e-3;
+        let pts = flatten_near_optimal(&c, tol, 40)?;
+        let steps: Vec<f64> = pts
+            .windows(2)
+            .map(|w| chord_deviation(&c, w[0].t, w[1].t))
+            .collect::<Result<_, _>>()?;
+        assert!(steps.iter().all(|&e| e <= tol));
+        // All but the last step end at a deviation in [0.98 tol, tol] (or after the search's
+        // evaluation cap, which this smooth curve does not reach).
+        let full = steps[..steps.len() - 1]
+            .iter()
+            .filter(|&&e| e >= ACCEPT_FRACTION * tol)
+            .count();
+        assert_eq!(full, steps.len() - 1);
+        Ok(())
+    }
+
+    #[test]
+    fn errors_are_typed() {
+        let c = curve(&[(0.0, 0.0), (1.0, 5.0), (2.0, 0.0)]);
+        assert!(matches!(
+            flatten_near_optimal(&c, f64::NAN, 40),
+            Err(SubdivError::InvalidTolerance { .. })
+        ));
+        assert_eq!(
+            flatten_near_optimal(&c, 1e-12, 3),
+            Err(SubdivError::DepthLimit { limit: 3 })
+        );
+        let dot = curve(&[(0.0, 0.0)]);
+        assert_eq!(
+            flatten_near_optimal(&dot, 1.0, 40),
+            Err(SubdivError::TooFewPoints { got: 1 })
+        );
+    }
+}

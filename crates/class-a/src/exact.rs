@@ -83,6 +83,9 @@ impl ScaledBernstein {
     /// Degree elevation by r: multiplication by ((1 − t) + t)ʳ.
     #[must_use]
     pub fn elevate(&self, r: usize) -> Self {
+        if r == 0 {
+            return self.clone();
+        }
         self.mul(&Self::new(binomial_row(r)))
     }
 

@@ -7,8 +7,8 @@
 //! using logarithmic curvature graphs*, CAD&A 5 (2008).
 //!
 //! Class A Bézier curves have control polygon legs Δbⱼ = Mʲ Δb₀ for a Class A matrix M. This
-//! crate reports each of Farin's matrix conditions separately, certifies monotone curvature and
-//! torsion from the curve itself (Bernstein form of the derivative's numerator), generates
+//! crate reports each of Farin's matrix conditions separately, proves monotone curvature and
+//! torsion of the curve itself (exact integer Bernstein form of the derivative's numerator), generates
 //! typical planar curves from three points with a bracketed root solve (the paper uses
 //! Nelder–Mead, kept for comparison), typical spatial curves from four points, the log-spiral
 //! pole of the control points, and logarithmic curvature/torsion graphs.

@@ -246,3 +246,37 @@ fn undecided_is_reported_not_guessed() {
         v => panic!("{v:?}"),
     }
 }
+
+proptest! {
+    #![proptest_config(ProptestConfig::with_cases(48))]
+    /// Torsion verdicts on random spatial curves agree with dense sampling; a reported extremum
+    /// is a local extremum of τ.
+    #[test]
+    fn torsion_verdict_holds_on_samples(c in bez_core::proptest_support::curve::<3>(3..=6, 5.0)) {
+        let tau = |t: f64| torsion_with_derivative(&c, t).map(|x| x.0);
+        let regular = (0..=400).all(|i| {
+            let t = i as f64 / 400.0;
+            match (c.derivative().eval(t), c.derivative().derivative().eval(t)) {
+                (Ok(d1), Ok(d2)) => d1.cross(&d2).norm() > 1e-2,
+                _ => false,
+            }
+        });
+        prop_assume!(regular);
+        let cert = torsion_certificate(&c).unwrap();
+        let ts: Vec<f64> = (0..=400).map(|i| tau(i as f64 / 400.0).unwrap()).collect();
+        let scale = ts.iter().fold(0.0f64, |m, v| m.max(v.abs()));
+        let tol = 1e-9 * scale;
+        match cert.verdict {
+            Monotonicity::Increasing => prop_assert!(ts.windows(2).all(|w| w[1] >= w[0] - tol)),
+            Monotonicity::Decreasing => prop_assert!(ts.windows(2).all(|w| w[1] <= w[0] + tol)),
+            Monotonicity::Constant => prop_assert!(ts.windows(2).all(|w| (w[1] - w[0]).abs() <= tol)),
+            Monotonicity::Undecided { .. } => prop_assert!(false, "undecided: {cert:?}"),
+            Monotonicity::NotMonotone { extremum: e, bracket } => {
+                prop_assert!(bracket.0 <= e && e <= bracket.1 && bracket.1 - bracket.0 < 1e-11);
+                let h = (e.min(1.0 - e) / 2.0).min(1e-4);
+                let (a, b) = (tau(e).unwrap() - tau(e - h).unwrap(), tau(e + h).unwrap() - tau(e).unwrap());
+                prop_assert!(a * b <= tol * tol, "{a} {b}");
+            }
+        }
+    }
+}

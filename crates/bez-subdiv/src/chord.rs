@@ -23,7 +23,8 @@ fn bernstein_range(coeffs: &[f64]) -> (f64, f64) {
 /// perpendicular offset of the arc from the chord line and o the largest overshoot of its
 /// projection beyond either end of the chord (0 if none).
 ///
-/// d and o are exact: with u the unit chord direction, the signed offset u × (B(t) − B(a)) and
+/// d and o are exact (o is replaced by its control-point bound when that is below 1e-12 of the
+/// chord length, i.e. at the rounding level): with u the unit chord direction, the signed offset u × (B(t) − B(a)) and
 /// the projection u · (B(t) − B(a)) are polynomials whose Bernstein coefficients come from the
 /// control points of the arc, maximized at their end points or at the roots of their
 /// derivatives. A degenerate chord (B(a) = B(b)) gives the largest control-point distance to
@@ -55,9 +56,22 @@ pub fn chord_deviation(curve: &BezierCurve<2>, a: f64, b: f64) -> Result<f64, Su
         .collect();
     let along: Vec<f64> = piece.points().iter().map(|p| u.dot(&(p - p0))).collect();
     let (dlo, dhi) = bernstein_range(&offset);
-    let (plo, phi) = bernstein_range(&along);
     let perpendicular = dlo.abs().max(dhi.abs());
-    let overshoot = (-plo).max(phi - len).max(0.0);
+    // The projection lies within the hull of its coefficients, so their overshoot bounds the
+    // arc's. When that bound is at the rounding level (the usual case: the last coefficient is
+    // len up to an ulp), it is used as is and no root isolation is needed for the projection.
+    let (clo, chi) = along
+        .iter()
+        .fold((f64::INFINITY, f64::NEG_INFINITY), |(lo, hi), &v| {
+            (lo.min(v), hi.max(v))
+        });
+    let hull_overshoot = (-clo).max(chi - len).max(0.0);
+    let overshoot = if hull_overshoot <= 1e-12 * len {
+        hull_overshoot
+    } else {
+        let (plo, phi) = bernstein_range(&along);
+        (-plo).max(phi - len).max(0.0)
+    };
     Ok(perpendicular.hypot(overshoot))
 }
 

@@ -73,10 +73,41 @@ pub(crate) fn halve_until(
     emit: impl FnMut(&[Vector2<f64>], usize),
 ) -> Result<usize, SubdivError> {
     match points {
-        [a, b] => run(ArrayStack::new([*a, *b]), max_depth, accept, emit),
-        [a, b, c] => run(ArrayStack::new([*a, *b, *c]), max_depth, accept, emit),
-        [a, b, c, d] => run(ArrayStack::new([*a, *b, *c, *d]), max_depth, accept, emit),
+        [a, b] => run_array([*a, *b], max_depth, accept, emit),
+        [a, b, c] => run_array([*a, *b, *c], max_depth, accept, emit),
+        [a, b, c, d] => run_array([*a, *b, *c, *d], max_depth, accept, emit),
         _ => run(FlatStack::new(points), max_depth, accept, emit),
+    }
+}
+
+/// [`halve_until`] on pieces of `N` control points held by value: the current piece stays in
+/// registers and descends into its left half; right halves wait on a stack with their levels.
+fn run_array<const N: usize>(
+    points: [Vector2<f64>; N],
+    max_depth: usize,
+    mut accept: impl FnMut(&[Vector2<f64>]) -> bool,
+    mut emit: impl FnMut(&[Vector2<f64>], usize),
+) -> Result<usize, SubdivError> {
+    let mut pending: Vec<([Vector2<f64>; N], usize)> = Vec::with_capacity(64);
+    let (mut piece, mut level) = (points, 0);
+    let mut splits = 0;
+    loop {
+        if accept(&piece) {
+            emit(&piece, level);
+            match pending.pop() {
+                Some(next) => (piece, level) = next,
+                None => return Ok(splits),
+            }
+            continue;
+        }
+        if level >= max_depth {
+            return Err(SubdivError::DepthLimit { limit: max_depth });
+        }
+        splits += 1;
+        level += 1;
+        let (left, right) = de_casteljau_split_array(piece, 0.5);
+        pending.push((right, level));
+        piece = left;
     }
 }
 
@@ -88,39 +119,6 @@ trait PieceStack {
     fn pop(&mut self);
     /// Replaces the top piece by its halves one level deeper, the left half on top.
     fn halve_top(&mut self) -> Result<(), SubdivError>;
-}
-
-/// Pieces of N control points, one array each, with their levels.
-struct ArrayStack<const N: usize>(Vec<([Vector2<f64>; N], usize)>);
-
-impl<const N: usize> ArrayStack<N> {
-    fn new(points: [Vector2<f64>; N]) -> Self {
-        let mut pieces = Vec::with_capacity(64);
-        pieces.push((points, 0));
-        Self(pieces)
-    }
-}
-
-impl<const N: usize> PieceStack for ArrayStack<N> {
-    fn top(&self) -> Option<(&[Vector2<f64>], usize)> {
-        self.0.last().map(|(p, depth)| (p.as_slice(), *depth))
-    }
-
-    fn pop(&mut self) {
-        self.0.pop();
-    }
-
-    fn halve_top(&mut self) -> Result<(), SubdivError> {
-        let Some((top, depth)) = self.0.last_mut() else {
-            return Ok(());
-        };
-        let (left, right) = de_casteljau_split_array(*top, 0.5);
-        *top = right;
-        *depth += 1;
-        let depth = *depth;
-        self.0.push((left, depth));
-        Ok(())
-    }
 }
 
 /// Pieces of n control points, piece k at `buffer[k n .. (k + 1) n]` and level `depths[k]`.
@@ -175,7 +173,7 @@ impl PieceStack for FlatStack {
     }
 }
 
-/// The loop of [`halve_until`] on a stack holding the whole curve.
+/// The loop of [`halve_until`] on a stack holding the whole curve (degree 4 and up).
 fn run<S: PieceStack>(
     mut stack: S,
     max_depth: usize,

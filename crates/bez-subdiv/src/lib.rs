@@ -35,6 +35,7 @@ mod error;
 mod fixed;
 mod flatten;
 mod guaranteed;
+mod hausdorff;
 mod measure;
 mod near_optimal;
 mod split_rule;
@@ -49,6 +50,7 @@ pub use crate::flatten::{
     curve_size, flatten,
 };
 pub use crate::guaranteed::{FlatPoint, distance_to_segment, flatten_guaranteed};
+pub use crate::hausdorff::{HausdorffSampling, measured_hausdorff};
 pub use crate::measure::{distance_to_chord_line, flatness, hull_area, max_chord_distance};
 pub use crate::near_optimal::{flatten_near_optimal, optimal_segment_count};
 pub use crate::split_rule::{

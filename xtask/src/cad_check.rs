@@ -12,6 +12,7 @@ use std::process::Command;
 
 use pde_bezier::{Method, cases, solve, write_iges, write_step};
 
+use crate::venv::python_env;
 use crate::{DynError, project_root};
 
 const SCRIPT: &str = r#"
@@ -52,27 +53,7 @@ sys.exit(0 if worst <= 1e-12 else 1)
 
 pub(crate) fn run() -> Result<(), DynError> {
     let root = project_root();
-    let venv = root.join("target").join("cad-venv");
-    let python = venv.join("bin").join("python");
-    if !python.exists() {
-        let ok = Command::new("python3")
-            .arg("-m")
-            .arg("venv")
-            .arg(&venv)
-            .status()?;
-        if !ok.success() {
-            return Err("python3 -m venv failed".into());
-        }
-    }
-    let have = Command::new(&python).args(["-c", "import OCP"]).status()?;
-    if !have.success() {
-        let ok = Command::new(&python)
-            .args(["-m", "pip", "install", "--quiet", "cadquery-ocp-novtk"])
-            .status()?;
-        if !ok.success() {
-            return Err("pip install cadquery-ocp-novtk failed".into());
-        }
-    }
+    let python = python_env("cad-venv", "OCP", &["cadquery-ocp-novtk"])?;
     let dir = root.join("target").join("cad-check");
     fs::create_dir_all(&dir)?;
     let mut enneper = cases::enneper(3, 3, 2)?;

@@ -119,6 +119,12 @@ fn degree_25_per_point(c: &mut Criterion) {
         b.iter(|| bez_subdiv::flatten_guaranteed(black_box(&curve), tol, 40));
     });
     g.throughput(Throughput::Elements(count(
+        bez_subdiv::flatten_local_wang(&curve, tol, 40).map(|p| p.len()),
+    )));
+    g.bench_function("local Wang", |b| {
+        b.iter(|| bez_subdiv::flatten_local_wang(black_box(&curve), tol, 40));
+    });
+    g.throughput(Throughput::Elements(count(
         bez_subdiv::flatten_near_optimal(&curve, tol, 40).map(|p| p.len()),
     )));
     g.bench_function("near-optimal", |b| {

@@ -1,15 +1,19 @@
 //! Beyond the paper: a-priori bounds on the subdivision depth and on the segment count (after
 //! Wang Guo-Zhao, 1984).
 
-use bez_core::BezierCurve;
+use bez_core::{BezierCurve, Vector2};
 
 use crate::flatten::curve_size;
 
 /// The largest second difference M = maxᵢ |Pᵢ − 2Pᵢ₊₁ + Pᵢ₊₂| (0 below degree 2).
 #[must_use]
 pub fn max_second_difference(curve: &BezierCurve<2>) -> f64 {
-    curve
-        .points()
+    second_difference_max(curve.points())
+}
+
+/// maxᵢ |Pᵢ − 2Pᵢ₊₁ + Pᵢ₊₂| of a control polygon (0 below three points).
+fn second_difference_max(points: &[Vector2<f64>]) -> f64 {
+    points
         .windows(3)
         .map(|w| (w[0] - w[1] * 2.0 + w[2]).norm())
         .fold(0.0, f64::max)
@@ -52,10 +56,16 @@ pub fn wang_segment_count(curve: &BezierCurve<2>, tolerance: f64) -> usize {
     if !(tolerance.is_finite() && tolerance > 0.0) {
         return 0;
     }
-    let n = curve.degree() as f64;
-    let m = max_second_difference(curve);
-    // A finite positive root; the cast saturates for absurd inputs.
-    ((n * (n - 1.0) * m / (8.0 * tolerance)).sqrt().ceil() as usize).max(1)
+    // A finite positive root or +∞; the cast saturates for absurd inputs.
+    (wang_steps(curve.points(), tolerance).ceil() as usize).max(1)
+}
+
+/// √(n(n − 1) M / (8 tol)) for the control polygon `points` of degree n, unrounded: Wang's
+/// count before the ceiling (0 below degree 2). `tolerance` must be positive.
+pub(crate) fn wang_steps(points: &[Vector2<f64>], tolerance: f64) -> f64 {
+    let n = points.len().saturating_sub(1) as f64;
+    let m = second_difference_max(points);
+    (n * (n - 1.0) * m / (8.0 * tolerance)).sqrt()
 }
 
 #[cfg(test)]

@@ -36,6 +36,7 @@ mod fixed;
 mod flatten;
 mod guaranteed;
 mod hausdorff;
+mod local_wang;
 mod measure;
 mod near_optimal;
 mod split_rule;
@@ -51,6 +52,7 @@ pub use crate::flatten::{
 };
 pub use crate::guaranteed::{FlatPoint, distance_to_segment, flatten_guaranteed};
 pub use crate::hausdorff::{HausdorffSampling, measured_hausdorff};
+pub use crate::local_wang::{LOCAL_WANG_STEPS, flatten_local_wang};
 pub use crate::measure::{distance_to_chord_line, flatness, hull_area, max_chord_distance};
 pub use crate::near_optimal::{flatten_near_optimal, optimal_segment_count};
 pub use crate::split_rule::{

@@ -9,6 +9,12 @@
 //! [`SplitRule`]: the classical t = ½, or the parameter minimizing the pieces' flatness
 //! (Def. 2.2) or convex-hull area (Def. 2.1), searched on the paper's grid or exactly.
 //!
+//! Beyond the paper, flattenings with a Hausdorff guarantee: [`flatten_guaranteed`] (halving
+//! until the control points are near the chord segment), [`flatten_local_wang`] (Wang's bound
+//! piece by piece, O(n) per point, the fast one at high degree) and [`flatten_near_optimal`]
+//! (close to the lower bound [`optimal_segment_count`]); [`flatten_fixed_into`] is the fixed rule
+//! without allocation, and [`measured_hausdorff`] checks any of them.
+//!
 //! Feature `rayon`: [`flatten_batch`] flattens many curves in parallel. Feature `serde`: serde on
 //! the data types.
 //!

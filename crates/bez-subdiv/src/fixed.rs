@@ -41,19 +41,19 @@ pub fn flatten_fixed_into(
     let limit = tolerance * size;
     // Every piece starts where the previous one ended (the first at B(0) = P₀, exactly).
     polyline.push(curve.start());
-    let (mut depth, mut pieces) = (0, 0);
+    let mut depth = 0;
     stats.splits = halve_until(
         curve.points(),
         max_depth,
         |piece| within_chord_line(piece, limit),
         |piece, level| {
             depth = depth.max(level);
-            pieces += 1;
             polyline.extend_from_slice(piece.get(1..).unwrap_or_default());
         },
     )?;
     stats.depth = depth;
-    stats.pieces = pieces;
+    // Each halving turns one piece into two.
+    stats.pieces = stats.splits + 1;
     Ok(stats)
 }
 
@@ -66,6 +66,7 @@ pub fn flatten_fixed_into(
 ///
 /// # Errors
 /// [`SubdivError::DepthLimit`] when a piece is not accepted at level `max_depth`.
+#[inline(always)]
 pub(crate) fn halve_until(
     points: &[Vector2<f64>],
     max_depth: usize,
@@ -82,6 +83,7 @@ pub(crate) fn halve_until(
 
 /// [`halve_until`] on pieces of `N` control points held by value: the current piece stays in
 /// registers and descends into its left half; right halves wait on a stack with their levels.
+#[inline(always)]
 fn run_array<const N: usize>(
     points: [Vector2<f64>; N],
     max_depth: usize,

@@ -47,6 +47,35 @@ pub fn flatten_guaranteed(
     tolerance: f64,
     max_depth: usize,
 ) -> Result<Vec<FlatPoint>, SubdivError> {
+    halve_to_points(
+        curve,
+        tolerance,
+        max_depth,
+        |piece| match piece {
+            [a, interior @ .., b] => interior
+                .iter()
+                .all(|p| distance_to_segment(p, a, b) <= tolerance),
+            _ => true,
+        },
+        |_, _, _, _| {},
+    )
+}
+
+/// The points of a flattening by halving at t = ½ until `accept` holds for a piece: B(0), then
+/// for each accepted piece on [t₀, t₀ + span], in parameter order, the points `interior(piece,
+/// t₀, span, out)` appends and the piece's end point (an exact de Casteljau end point; t = 1
+/// pinned at the end, since the dyadic spans sum to 1 exactly only up to level 53).
+///
+/// # Errors
+/// [`SubdivError::InvalidTolerance`] unless `tolerance` is positive and finite,
+/// [`SubdivError::TooFewPoints`] below two control points, [`SubdivError::DepthLimit`].
+pub(crate) fn halve_to_points(
+    curve: &BezierCurve<2>,
+    tolerance: f64,
+    max_depth: usize,
+    accept: impl FnMut(&[Vector2<f64>]) -> bool,
+    mut interior: impl FnMut(&[Vector2<f64>], f64, f64, &mut Vec<FlatPoint>),
+) -> Result<Vec<FlatPoint>, SubdivError> {
     if !(tolerance.is_finite() && tolerance > 0.0) {
         return Err(SubdivError::InvalidTolerance { value: tolerance });
     }
@@ -58,26 +87,17 @@ pub fn flatten_guaranteed(
         t: 0.0,
         point: curve.start(),
     }];
-    // A piece at level d spans 2⁻ᵈ of the parameter range; pieces come in parameter order.
-    let mut t = 0.0_f64;
-    halve_until(
-        curve.points(),
-        max_depth,
-        |piece| {
-            let (a, b) = (piece[0], piece[n - 1]);
-            piece[1..n - 1]
-                .iter()
-                .all(|p| distance_to_segment(p, &a, &b) <= tolerance)
-        },
-        |piece, depth| {
-            t += 0.5_f64.powi(i32::try_from(depth).unwrap_or(i32::MAX));
-            out.push(FlatPoint {
-                t,
-                point: piece[n - 1],
-            });
-        },
-    )?;
-    // The sum of the spans is 1 exactly up to level 53; pin the end for deeper runs.
+    // A piece at level d spans 2⁻ᵈ of the parameter range.
+    let mut t0 = 0.0_f64;
+    halve_until(curve.points(), max_depth, accept, |piece, depth| {
+        let span = 0.5_f64.powi(i32::try_from(depth).unwrap_or(i32::MAX));
+        interior(piece, t0, span, &mut out);
+        t0 += span;
+        out.push(FlatPoint {
+            t: t0,
+            point: piece[n - 1],
+        });
+    })?;
     if let Some(last) = out.last_mut() {
         last.t = 1.0;
     }

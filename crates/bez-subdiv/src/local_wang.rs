@@ -4,8 +4,7 @@ use bez_core::{BezierCurve, HornerBernstein};
 
 use crate::bound::wang_steps;
 use crate::error::SubdivError;
-use crate::fixed::halve_until;
-use crate::guaranteed::FlatPoint;
+use crate::guaranteed::{FlatPoint, halve_to_points};
 
 /// Largest number of equal steps [`flatten_local_wang`] places on one piece; pieces that need
 /// more are halved first.
@@ -55,48 +54,25 @@ pub fn flatten_local_wang(
     tolerance: f64,
     max_depth: usize,
 ) -> Result<Vec<FlatPoint>, SubdivError> {
-    if !(tolerance.is_finite() && tolerance > 0.0) {
-        return Err(SubdivError::InvalidTolerance { value: tolerance });
-    }
-    let n = curve.points().len();
-    if n < 2 {
-        return Err(SubdivError::TooFewPoints { got: n });
-    }
     let horner = HornerBernstein::new(curve.points());
-    let mut out = vec![FlatPoint {
-        t: 0.0,
-        point: curve.start(),
-    }];
     let max_steps = LOCAL_WANG_STEPS as f64;
-    // A piece at level d spans 2⁻ᵈ of the parameter range; pieces come in parameter order.
-    let mut t0 = 0.0_f64;
-    halve_until(
-        curve.points(),
+    halve_to_points(
+        curve,
+        tolerance,
         max_depth,
         |piece| wang_steps(piece, tolerance) <= max_steps,
-        |piece, depth| {
-            let span = 0.5_f64.powi(i32::try_from(depth).unwrap_or(i32::MAX));
+        |piece, t0, span, out| {
             // At most LOCAL_WANG_STEPS here, so the cast is exact.
             let k = wang_steps(piece, tolerance).ceil().max(1.0) as usize;
             for j in 1..k {
                 let t = t0 + span * (j as f64 / k as f64);
-                // `None` only for an empty polygon, which was rejected above.
+                // `None` only for an empty polygon, which halve_to_points rejects.
                 if let Some(point) = horner.eval(t) {
                     out.push(FlatPoint { t, point });
                 }
             }
-            t0 += span;
-            out.push(FlatPoint {
-                t: t0,
-                point: piece[n - 1],
-            });
         },
-    )?;
-    // The sum of the spans is 1 exactly up to level 53; pin the end for deeper runs.
-    if let Some(last) = out.last_mut() {
-        last.t = 1.0;
-    }
-    Ok(out)
+    )
 }
 
 #[cfg(test)]

@@ -52,14 +52,20 @@ pub fn max_chord_distance(points: &[Vector2<f64>]) -> f64 {
             .map(|p| distance_to_chord_line(p, a, b))
             .fold(0.0, f64::max);
     }
-    let cross = interior
+    max_cross(a, &d, interior) / len
+}
+
+/// c = maxᵢ |d × (Pᵢ − a)| over `interior`: |d| times the largest distance to the line through
+/// `a` with direction `d` (0 for no points).
+#[inline]
+fn max_cross(a: &Vector2<f64>, d: &Vector2<f64>, interior: &[Vector2<f64>]) -> f64 {
+    interior
         .iter()
         .map(|p| {
             let w = p - a;
             (d.x * w.y - d.y * w.x).abs()
         })
-        .fold(0.0, f64::max);
-    cross / len
+        .fold(0.0, f64::max)
 }
 
 /// Relative margin under which [`within_chord_line`] falls back to the exact quotient: far above
@@ -78,13 +84,7 @@ pub(crate) fn within_chord_line(points: &[Vector2<f64>], limit: f64) -> bool {
     if let [a, interior @ .., b] = points {
         let d = b - a;
         let len2 = d.norm_squared();
-        let cross = interior
-            .iter()
-            .map(|p| {
-                let w = p - a;
-                (d.x * w.y - d.y * w.x).abs()
-            })
-            .fold(0.0, f64::max);
+        let cross = max_cross(a, &d, interior);
         let lhs = cross * cross;
         let rhs = limit * limit * len2;
         // With limit² l² normal and finite, an underflow of c² only makes it smaller than a

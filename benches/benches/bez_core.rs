@@ -3,6 +3,7 @@
 
 use std::hint::black_box;
 
+use bez_core::{de_casteljau_halve, de_casteljau_split};
 use bezkit_benches::{random_curve, uniform_parameters};
 use criterion::{BenchmarkId, Criterion, criterion_group, criterion_main};
 
@@ -36,6 +37,19 @@ fn split_and_elevate(c: &mut Criterion) {
         let curve = random_curve::<2>(n, n as u64);
         g.bench_with_input(BenchmarkId::from_parameter(n), &curve, |b, cv| {
             b.iter(|| cv.split(black_box(0.43)));
+        });
+    }
+    g.finish();
+    // The slice kernels at t = ½: de Casteljau's averages against pairwise sums.
+    let mut g = c.benchmark_group("split_at_one_half");
+    for n in [3, 12, 25, 49] {
+        let curve = random_curve::<2>(n, n as u64);
+        let (mut left, mut right) = (curve.points().to_vec(), curve.points().to_vec());
+        g.bench_function(BenchmarkId::new("de_casteljau_split", n), |b| {
+            b.iter(|| de_casteljau_split(black_box(curve.points()), 0.5, &mut left, &mut right));
+        });
+        g.bench_function(BenchmarkId::new("de_casteljau_halve", n), |b| {
+            b.iter(|| de_casteljau_halve(black_box(curve.points()), &mut left, &mut right));
         });
     }
     g.finish();

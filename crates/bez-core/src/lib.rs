@@ -46,6 +46,7 @@ mod casteljau;
 mod curve;
 mod differential;
 mod error;
+mod halve;
 #[cfg(feature = "glam")]
 mod interop_glam;
 mod nearest;
@@ -70,6 +71,7 @@ pub use crate::casteljau::{
 };
 pub use crate::curve::BezierCurve;
 pub use crate::error::CoreError;
+pub use crate::halve::{de_casteljau_halve, de_casteljau_halve_array, de_casteljau_halve_in_place};
 #[cfg(feature = "glam")]
 pub use crate::interop_glam::{from_dvec2, from_dvec3, to_dvec2, to_dvec3};
 pub use crate::nearest::Nearest;

@@ -2,7 +2,7 @@
 //!
 //! [`flatten`]: crate::flatten()
 
-use bez_core::{BezierCurve, Vector2, de_casteljau_split, de_casteljau_split_array};
+use bez_core::{BezierCurve, Vector2, de_casteljau_halve_array, de_casteljau_halve_in_place};
 
 use crate::error::SubdivError;
 use crate::flatten::{FlattenStats, curve_size, validate};
@@ -107,7 +107,7 @@ fn run_array<const N: usize>(
         }
         splits += 1;
         level += 1;
-        let (left, right) = de_casteljau_split_array(piece, 0.5);
+        let (left, right) = de_casteljau_halve_array(piece);
         pending.push((right, level));
         piece = left;
     }
@@ -128,7 +128,6 @@ struct FlatStack {
     n: usize,
     buffer: Vec<Vector2<f64>>,
     depths: Vec<usize>,
-    parent: Vec<Vector2<f64>>,
 }
 
 impl FlatStack {
@@ -141,7 +140,6 @@ impl FlatStack {
             n: points.len(),
             buffer,
             depths,
-            parent: points.to_vec(),
         }
     }
 }
@@ -167,10 +165,10 @@ impl PieceStack for FlatStack {
         let depth = *depth;
         self.depths.push(depth);
         let start = self.buffer.len().saturating_sub(self.n);
-        self.parent.copy_from_slice(&self.buffer[start..]);
         self.buffer.resize(start + 2 * self.n, Vector2::zeros());
-        let (right, left) = self.buffer[start..].split_at_mut(self.n);
-        de_casteljau_split(&self.parent, 0.5, left, right)?;
+        // The piece becomes its right half where it lies; the left half goes on top.
+        let (piece, left) = self.buffer[start..].split_at_mut(self.n);
+        de_casteljau_halve_in_place(piece, left)?;
         Ok(())
     }
 }

@@ -1,6 +1,6 @@
 //! Adaptive subdivision ("flattening") with per-piece stopping by eq. (3).
 
-use bez_core::{BezierCurve, Vector2, de_casteljau_split};
+use bez_core::{BezierCurve, Vector2, de_casteljau_halve, de_casteljau_split};
 
 use crate::error::SubdivError;
 use crate::measure::within_chord_line;
@@ -140,7 +140,12 @@ pub fn flatten(
         stats.splits += 1;
         let mut left = vec![Vector2::zeros(); n];
         let mut right = vec![Vector2::zeros(); n];
-        de_casteljau_split(&points, choice.t, &mut left, &mut right)?;
+        if choice.t == 0.5 {
+            // The same halving as the fixed rule's fast path, bit for bit.
+            de_casteljau_halve(&points, &mut left, &mut right)?;
+        } else {
+            de_casteljau_split(&points, choice.t, &mut left, &mut right)?;
+        }
         let tm = t0 + choice.t * (t1 - t0);
         let keep = searching && choice.keep_searching;
         stack.push((right, depth + 1, tm, t1, keep));

@@ -27,6 +27,33 @@ pub fn distance_to_segment(p: &Vector2<f64>, a: &Vector2<f64>, b: &Vector2<f64>)
     (p - (a + d * s)).norm()
 }
 
+/// Whether every interior control point of `piece` lies within `tolerance` of the chord segment
+/// [P₀, Pₙ]: the acceptance test of [`flatten_guaranteed`].
+///
+/// Compared in squared distances, with one division per piece (the projection parameter
+/// s = (Pᵢ − P₀)·d / |d|², d = Pₙ − P₀, clamped to [0, 1]); [`distance_to_segment`] decides when
+/// tolerance² or |d|² is not a normal number.
+fn within_chord_segment(piece: &[Vector2<f64>], tolerance: f64) -> bool {
+    let [a, interior @ .., b] = piece else {
+        return true;
+    };
+    let d = b - a;
+    let len2 = d.norm_squared();
+    let tol2 = tolerance * tolerance;
+    let normal = f64::MIN_POSITIVE..=f64::MAX;
+    if !(normal.contains(&len2) && normal.contains(&tol2)) {
+        return interior
+            .iter()
+            .all(|p| distance_to_segment(p, a, b) <= tolerance);
+    }
+    let inv_len2 = 1.0 / len2;
+    interior.iter().all(|p| {
+        let w = p - a;
+        let s = (w.dot(&d) * inv_len2).clamp(0.0, 1.0);
+        (w - d * s).norm_squared() <= tol2
+    })
+}
+
 /// Points B(tᵢ), 0 = t₀ < … < t_k = 1, whose polyline is within `tolerance` of the curve in
 /// Hausdorff distance (an absolute distance, in the curve's units).
 ///
@@ -51,12 +78,7 @@ pub fn flatten_guaranteed(
         curve,
         tolerance,
         max_depth,
-        |piece| match piece {
-            [a, interior @ .., b] => interior
-                .iter()
-                .all(|p| distance_to_segment(p, a, b) <= tolerance),
-            _ => true,
-        },
+        |piece| within_chord_segment(piece, tolerance),
         |_, _, _, _| {},
     )
 }

@@ -91,14 +91,7 @@ pub fn de_casteljau_split<T: ControlPoint>(
     right: &mut [T],
 ) -> Result<(), CoreError> {
     let len = points.len();
-    for buf in [left.len(), right.len()] {
-        if buf != len {
-            return Err(CoreError::BufferLength {
-                len: buf,
-                expected: len,
-            });
-        }
-    }
+    check_buffer_lengths(len, &[left.len(), right.len()])?;
     if len == 0 {
         return Ok(());
     }
@@ -114,6 +107,15 @@ pub fn de_casteljau_split<T: ControlPoint>(
     }
     // `right[i]` now holds Pᵢⁿ⁻ⁱ, which is exactly the right piece in order.
     Ok(())
+}
+
+/// [`CoreError::BufferLength`] for the first of `buffers` (lengths of output buffers) that is not
+/// `expected`.
+pub(crate) fn check_buffer_lengths(expected: usize, buffers: &[usize]) -> Result<(), CoreError> {
+    match buffers.iter().find(|&&len| len != expected) {
+        Some(&len) => Err(CoreError::BufferLength { len, expected }),
+        None => Ok(()),
+    }
 }
 
 /// [`de_casteljau_split`] of a control polygon of fixed size `N`, by value: `(left, right)`.

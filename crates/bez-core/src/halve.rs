@@ -13,7 +13,7 @@
 //! and 1e250 in magnitude, up to degree 100. Outside that range the two differ by rounding only.
 
 use crate::CoreError;
-use crate::casteljau::ControlPoint;
+use crate::casteljau::{ControlPoint, check_buffer_lengths};
 
 /// Splits a control polygon at t = ½ into the control polygons of B on [0, ½] and [½, 1], by
 /// pairwise sums: `left` receives 2⁻ʳ S₀ʳ (r = 0..n), `right` receives 2⁻⁽ⁿ⁻ⁱ⁾ Sᵢⁿ⁻ⁱ.
@@ -39,15 +39,7 @@ pub fn de_casteljau_halve<T: ControlPoint>(
     left: &mut [T],
     right: &mut [T],
 ) -> Result<(), CoreError> {
-    let len = points.len();
-    for buf in [left.len(), right.len()] {
-        if buf != len {
-            return Err(CoreError::BufferLength {
-                len: buf,
-                expected: len,
-            });
-        }
-    }
+    check_buffer_lengths(points.len(), &[left.len(), right.len()])?;
     right.copy_from_slice(points);
     pairwise_sums(right, left);
     Ok(())
@@ -72,12 +64,7 @@ pub fn de_casteljau_halve_in_place<T: ControlPoint>(
     piece: &mut [T],
     left: &mut [T],
 ) -> Result<(), CoreError> {
-    if left.len() != piece.len() {
-        return Err(CoreError::BufferLength {
-            len: left.len(),
-            expected: piece.len(),
-        });
-    }
+    check_buffer_lengths(piece.len(), &[left.len()])?;
     pairwise_sums(piece, left);
     Ok(())
 }

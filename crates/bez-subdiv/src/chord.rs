@@ -77,15 +77,9 @@ pub fn chord_deviation(curve: &BezierCurve<2>, a: f64, b: f64) -> Result<f64, Su
 
 #[cfg(test)]
 mod tests {
-    use bez_core::Vector2;
-
     use super::*;
     use crate::guaranteed::distance_to_segment;
-
-    fn curve(points: &[(f64, f64)]) -> BezierCurve<2> {
-        BezierCurve::new(points.iter().map(|&(x, y)| Vector2::new(x, y)).collect())
-            .unwrap_or_else(|_| unreachable!("valid test points"))
-    }
+    use crate::test_support::curve;
 
     #[test]
     fn parabola_arc_deviates_by_a_quarter_of_its_control_height() -> Result<(), SubdivError> {

@@ -129,6 +129,7 @@ pub(crate) fn halve_to_points(
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::test_support::assert_typed_errors;
 
     #[test]
     fn segment_distance_clamps_to_end_points() {
@@ -171,24 +172,6 @@ mod tests {
 
     #[test]
     fn errors_are_typed() {
-        let c = BezierCurve::new(vec![
-            Vector2::new(0.0, 0.0),
-            Vector2::new(1.0, 5.0),
-            Vector2::new(2.0, 0.0),
-        ])
-        .unwrap();
-        assert!(matches!(
-            flatten_guaranteed(&c, 0.0, 40),
-            Err(SubdivError::InvalidTolerance { .. })
-        ));
-        assert_eq!(
-            flatten_guaranteed(&c, 1e-9, 3),
-            Err(SubdivError::DepthLimit { limit: 3 })
-        );
-        let dot = BezierCurve::new(vec![Vector2::new(0.0, 0.0)]).unwrap();
-        assert_eq!(
-            flatten_guaranteed(&dot, 1.0, 3),
-            Err(SubdivError::TooFewPoints { got: 1 })
-        );
+        assert_typed_errors(flatten_guaranteed);
     }
 }

@@ -46,6 +46,8 @@ mod local_wang;
 mod measure;
 mod near_optimal;
 mod split_rule;
+#[cfg(test)]
+mod test_support;
 
 pub use crate::batch::flatten_batch;
 pub use crate::bound::{max_second_difference, wang_depth, wang_segment_count};

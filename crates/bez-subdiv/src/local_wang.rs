@@ -84,6 +84,7 @@ mod tests {
     use super::*;
     use crate::cases::{cusp, looped, random_curves};
     use crate::hausdorff::{HausdorffSampling, measured_hausdorff};
+    use crate::test_support::assert_typed_errors;
     use crate::wang_segment_count;
 
     #[test]
@@ -148,26 +149,6 @@ mod tests {
 
     #[test]
     fn errors_are_typed() {
-        let c = BezierCurve::new(vec![
-            Vector2::new(0.0, 0.0),
-            Vector2::new(1.0, 5.0),
-            Vector2::new(2.0, 0.0),
-        ])
-        .unwrap();
-        for bad in [0.0, -1.0, f64::NAN, f64::INFINITY] {
-            assert!(matches!(
-                flatten_local_wang(&c, bad, 40),
-                Err(SubdivError::InvalidTolerance { .. })
-            ));
-        }
-        assert_eq!(
-            flatten_local_wang(&c, 1e-9, 3),
-            Err(SubdivError::DepthLimit { limit: 3 })
-        );
-        let dot = BezierCurve::new(vec![Vector2::new(0.0, 0.0)]).unwrap();
-        assert_eq!(
-            flatten_local_wang(&dot, 1.0, 3),
-            Err(SubdivError::TooFewPoints { got: 1 })
-        );
+        assert_typed_errors(flatten_local_wang);
     }
 }

@@ -220,11 +220,7 @@ pub fn flatten_near_optimal(
 #[cfg(test)]
 mod tests {
     use super::*;
-
-    fn curve(points: &[(f64, f64)]) -> BezierCurve<2> {
-        BezierCurve::new(points.iter().map(|&(x, y)| Vector2::new(x, y)).collect())
-            .unwrap_or_else(|_| unreachable!("valid test points"))
-    }
+    use crate::test_support::{assert_typed_errors, curve};
 
     #[test]
     fn density_inverse_undoes_the_integral() -> Result<(), SubdivError> {
@@ -272,19 +268,6 @@ mod tests {
 
     #[test]
     fn errors_are_typed() {
-        let c = curve(&[(0.0, 0.0), (1.0, 5.0), (2.0, 0.0)]);
-        assert!(matches!(
-            flatten_near_optimal(&c, f64::NAN, 40),
-            Err(SubdivError::InvalidTolerance { .. })
-        ));
-        assert_eq!(
-            flatten_near_optimal(&c, 1e-12, 3),
-            Err(SubdivError::DepthLimit { limit: 3 })
-        );
-        let dot = curve(&[(0.0, 0.0)]);
-        assert_eq!(
-            flatten_near_optimal(&dot, 1.0, 40),
-            Err(SubdivError::TooFewPoints { got: 1 })
-        );
+        assert_typed_errors(flatten_near_optimal);
     }
 }

@@ -72,6 +72,27 @@ struct Piece {
     j: u32,
 }
 
+impl Piece {
+    /// The two halves [2m/2ʲ⁺¹, (2m + 1)/2ʲ⁺¹] and [(2m + 1)/2ʲ⁺¹, (2m + 2)/2ʲ⁺¹], right half
+    /// first (pushed on a stack, the left half is taken next).
+    fn halves(&self) -> [Self; 2] {
+        let (left, right) = halves(&self.b);
+        let m2 = &self.m << 1;
+        [
+            Self {
+                b: right,
+                m: &m2 + 1,
+                j: self.j + 1,
+            },
+            Self {
+                b: left,
+                m: m2,
+                j: self.j + 1,
+            },
+        ]
+    }
+}
+
 /// Divides all coefficients by their common power of two (keeps integers small).
 fn strip_twos(b: &mut [BigInt]) {
     let tz = b.iter().filter_map(BigInt::trailing_zeros).min();
@@ -168,18 +189,7 @@ pub(crate) fn sign_profile(f: &ScaledBernstein) -> SignProfile {
                 undecided.get_or_insert((lo, hi));
                 continue;
             }
-            let (l, r) = halves(&p.b);
-            let m2 = &p.m << 1;
-            stack.push(Piece {
-                b: r,
-                m: &m2 + 1,
-                j: p.j + 1,
-            });
-            stack.push(Piece {
-                b: l,
-                m: m2,
-                j: p.j + 1,
-            });
+            stack.extend(p.halves());
         }
     }
     match (undecided, pos.is_some(), neg.is_some()) {
@@ -297,18 +307,7 @@ pub(crate) fn positivity(f: &ScaledBernstein) -> Positivity {
                 hi: Dyadic::new(&p.m + 1, p.j).to_f64(),
             };
         }
-        let (l, r) = halves(&p.b);
-        let m2 = &p.m << 1;
-        stack.push(Piece {
-            b: r,
-            m: &m2 + 1,
-            j: p.j + 1,
-        });
-        stack.push(Piece {
-            b: l,
-            m: m2,
-            j: p.j + 1,
-        });
+        stack.extend(p.halves());
     }
     Positivity::Positive
 }

@@ -95,12 +95,14 @@ fn pairwise_sums<T: ControlPoint>(right: &mut [T], left: &mut [T]) {
     }
     // Level r: right[i] = Sᵢʳ for i ≤ n − r; left[r] = 2⁻ʳ S₀ʳ.
     let mut scale = 1.0;
-    for (r, l) in left.iter_mut().enumerate().take(len).skip(1) {
+    for r in 1..len {
         for i in 0..len - r {
             right[i] = right[i] + right[i + 1];
         }
         scale *= 0.5;
-        *l = right[0] * scale;
+        if let Some(l) = left.get_mut(r) {
+            *l = right[0] * scale;
+        }
     }
     // right[i] holds Sᵢⁿ⁻ⁱ: scale it by 2⁻⁽ⁿ⁻ⁱ⁾.
     let mut scale = 1.0;

@@ -83,7 +83,11 @@ pub(crate) fn halve_until(
 
 /// [`halve_until`] on pieces of `N` control points held by value: the current piece stays in
 /// registers and descends into its left half; right halves wait on a stack with their levels.
-#[inline(always)]
+///
+/// Kept out of line: one small function per degree and caller, with the caller's closures
+/// inlined into it, measured about 4 % faster on the peer cubics than inlining every degree's
+/// loop into one caller.
+#[inline(never)]
 fn run_array<const N: usize>(
     points: [Vector2<f64>; N],
     max_depth: usize,

@@ -24,11 +24,15 @@ pub(crate) fn tables() -> Result<Vec<Table>, DynError> {
     Ok(tables)
 }
 
-/// A flattening method: its name and a function from (curve, absolute tolerance) to polyline.
+/// A flattening method: its name and a function writing the polyline of (curve, absolute
+/// tolerance) into a buffer (cleared first, its capacity reused).
 type Method = (
     &'static str,
-    fn(&BezierCurve<2>, f64) -> Result<Vec<Vector2<f64>>, DynError>,
+    fn(&BezierCurve<2>, f64, &mut Vec<Vector2<f64>>) -> Result<(), DynError>,
 );
+
+/// Index of kurbo's `flatten` in [`methods`], the reference of the ratio column.
+const KURBO: usize = 3;
 
 /// The near-optimal mode is left out: the N* table measures it, and its cost is of another order.
 fn methods() -> [Method; 5] {
@@ -45,39 +49,55 @@ fn methods() -> [Method; 5] {
 }
 
 /// `flatten_fixed_into`'s output: the control polygons of the final pieces.
-fn fixed_polygons(c: &BezierCurve<2>, tol: f64) -> Result<Vec<Vector2<f64>>, DynError> {
-    let mut poly = Vec::new();
-    bez_subdiv::flatten_fixed_into(c, tol / bez_subdiv::curve_size(c), 40, &mut poly)?;
-    Ok(poly)
+fn fixed_polygons(
+    c: &BezierCurve<2>,
+    tol: f64,
+    out: &mut Vec<Vector2<f64>>,
+) -> Result<(), DynError> {
+    bez_subdiv::flatten_fixed_into(c, tol / bez_subdiv::curve_size(c), 40, out)?;
+    Ok(())
 }
 
-/// The end points of the same pieces (every n-th point of the control polygons).
-fn fixed_chords(c: &BezierCurve<2>, tol: f64) -> Result<Vec<Vector2<f64>>, DynError> {
+/// The end points of the same pieces: every n-th point of the control polygons, compacted in
+/// place after `flatten_fixed_into` (its time includes that pass).
+fn fixed_chords(c: &BezierCurve<2>, tol: f64, out: &mut Vec<Vector2<f64>>) -> Result<(), DynError> {
+    fixed_polygons(c, tol, out)?;
     let step = c.points().len() - 1;
-    Ok(fixed_polygons(c, tol)?.into_iter().step_by(step).collect())
+    let kept = out.len().div_ceil(step);
+    for k in 1..kept {
+        out[k] = out[k * step];
+    }
+    out.truncate(kept);
+    Ok(())
 }
 
-fn guaranteed(c: &BezierCurve<2>, tol: f64) -> Result<Vec<Vector2<f64>>, DynError> {
+fn guaranteed(c: &BezierCurve<2>, tol: f64, out: &mut Vec<Vector2<f64>>) -> Result<(), DynError> {
     let pts = bez_subdiv::flatten_guaranteed(c, tol, 40)?;
-    Ok(pts.into_iter().map(|p| p.point).collect())
+    out.clear();
+    out.extend(pts.into_iter().map(|p| p.point));
+    Ok(())
 }
 
-fn kurbo_flatten(c: &BezierCurve<2>, tol: f64) -> Result<Vec<Vector2<f64>>, DynError> {
+fn kurbo_flatten(
+    c: &BezierCurve<2>,
+    tol: f64,
+    out: &mut Vec<Vector2<f64>>,
+) -> Result<(), DynError> {
     use kurbo::{BezPath, PathEl, Point};
     let p: Vec<Point> = c.points().iter().map(|q| Point::new(q.x, q.y)).collect();
     let [p0, p1, p2, p3] = p[..] else {
         return Err("kurbo's flatten is run on cubics only".into());
     };
     let path = BezPath::from_vec(vec![PathEl::MoveTo(p0), PathEl::CurveTo(p1, p2, p3)]);
-    let mut out = Vec::new();
+    out.clear();
     kurbo::flatten(&path, tol, |el| match el {
         PathEl::MoveTo(q) | PathEl::LineTo(q) => out.push(Vector2::new(q.x, q.y)),
         _ => {}
     });
-    Ok(out)
+    Ok(())
 }
 
-fn lyon_flatten(c: &BezierCurve<2>, tol: f64) -> Result<Vec<Vector2<f64>>, DynError> {
+fn lyon_flatten(c: &BezierCurve<2>, tol: f64, out: &mut Vec<Vector2<f64>>) -> Result<(), DynError> {
     use lyon_geom::{CubicBezierSegment, point};
     let p: Vec<_> = c.points().iter().map(|q| point(q.x, q.y)).collect();
     let [from, ctrl1, ctrl2, to] = p[..] else {
@@ -89,23 +109,33 @@ fn lyon_flatten(c: &BezierCurve<2>, tol: f64) -> Result<Vec<Vector2<f64>>, DynEr
         ctrl2,
         to,
     };
-    let mut out = vec![c.start()];
+    out.clear();
+    out.push(c.start());
     cubic.for_each_flattened(tol, &mut |seg| out.push(Vector2::new(seg.to.x, seg.to.y)));
-    Ok(out)
+    Ok(())
 }
 
-/// Median time of one call in µs (7 batches of 200 calls).
-fn median_micros(c: &BezierCurve<2>, tol: f64, method: Method) -> Result<f64, DynError> {
-    let mut times = Vec::new();
-    for _ in 0..7 {
-        let start = Instant::now();
-        for _ in 0..200 {
-            black_box((method.1)(black_box(c), tol)?);
+/// Rounds of the interleaved timing, and calls per method in each round.
+const ROUNDS: usize = 40;
+const CALLS: usize = 100;
+
+/// Time of one call in µs for each method: every round runs each method `CALLS` times in turn,
+/// and a method's time is its fastest round. Interleaving exposes all methods to the same load,
+/// and the minimum discards the rounds a busy machine slowed down.
+fn best_micros(c: &BezierCurve<2>, tol: f64, methods: &[Method]) -> Result<Vec<f64>, DynError> {
+    let mut best = vec![f64::INFINITY; methods.len()];
+    let mut out = Vec::new();
+    for _ in 0..ROUNDS {
+        for (method, best) in methods.iter().zip(&mut best) {
+            let start = Instant::now();
+            for _ in 0..CALLS {
+                (method.1)(black_box(c), tol, &mut out)?;
+                black_box(&out);
+            }
+            *best = best.min(start.elapsed().as_secs_f64() * 1e6 / CALLS as f64);
         }
-        times.push(start.elapsed().as_secs_f64() * 1e6 / 200.0);
     }
-    times.sort_by(f64::total_cmp);
-    Ok(times[times.len() / 2])
+    Ok(best)
 }
 
 /// The peer table: segments, measured error / tol and time per method and cubic.
@@ -113,23 +143,27 @@ pub(crate) fn table() -> Result<Table, DynError> {
     let mut md = format!(
         "### bez-subdiv beside kurbo and lyon_geom: cubics at the same absolute tolerance (tol = {EPS} × size)\n\n\
          Error: measured Hausdorff distance between polyline and curve (20,001 curve samples to the polyline, exact nearest curve points from 5 points per segment) divided by tol.\n\
-         Time: in-process median of 7 × 200 calls on the machine that wrote this file, output collected into a `Vec`; not checked (the criterion bench `cubic_flatten_peers` is the speed reference).\n\n\
-         | curve | method | segments | error / tol | time (µs) | time per segment (ns) |\n\
-         |---|---|---|---|---|---|\n"
+         Time: in-process, interleaved: {ROUNDS} rounds of {CALLS} calls of every method in turn, each method's fastest round, on the machine that wrote this file, output written into one reused `Vec` (the guaranteed mode returns a new one); not checked. Ratio: time / kurbo's time on the same curve.\n\n\
+         | curve | method | segments | error / tol | time (µs) | time per segment (ns) | ratio to kurbo |\n\
+         |---|---|---|---|---|---|---|\n"
     );
     let mut rows = Vec::new();
     for (name, c) in peer_cubics() {
         let tol = EPS * bez_subdiv::curve_size(&c);
-        for method in methods() {
-            let poly = (method.1)(&c, tol)?;
+        let methods = methods();
+        let micros = best_micros(&c, tol, &methods)?;
+        let kurbo = micros[KURBO];
+        for (method, micros) in methods.iter().zip(micros) {
+            let mut poly = Vec::new();
+            (method.1)(&c, tol, &mut poly)?;
             let segments = poly.len().saturating_sub(1);
             let err = super::bez_subdiv::hausdorff(&c, &poly)? / tol;
-            let micros = median_micros(&c, tol, method)?;
             writeln!(
                 md,
-                "| {name} | {} | {segments} | {err:.3} | {micros:.2} | {:.1} |",
+                "| {name} | {} | {segments} | {err:.3} | {micros:.2} | {:.1} | {:.2} |",
                 method.0,
-                micros * 1e3 / segments.max(1) as f64
+                micros * 1e3 / segments.max(1) as f64,
+                micros / kurbo
             )?;
             rows.push(json!({
                 "curve": name, "method": method.0, "segments": segments, "error_over_tol": err,

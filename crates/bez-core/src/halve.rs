@@ -88,11 +88,17 @@ pub fn de_casteljau_halve_array<T: ControlPoint, const N: usize>(
 /// With `right` holding P₀..Pₙ on entry, leaves the right half in it and writes the left half
 /// into `left` (of the same length; its entries are only written).
 #[inline(always)]
+#[expect(
+    clippy::needless_range_loop,
+    reason = "the level r bounds the inner loop and indexes the left half"
+)]
 fn pairwise_sums<T: ControlPoint>(right: &mut [T], left: &mut [T]) {
     let len = right.len();
-    if let (Some(l), Some(p)) = (left.first_mut(), right.first()) {
-        *l = *p;
-    }
+    // Reslicing tells the optimizer that `left` is as long as `right` (no bounds checks).
+    let (Some(left), Some(&first)) = (left.get_mut(..len), right.first()) else {
+        return;
+    };
+    left[0] = first;
     // Level r: right[i] = Sᵢʳ for i ≤ n − r; left[r] = 2⁻ʳ S₀ʳ.
     let mut scale = 1.0;
     for r in 1..len {
@@ -100,9 +106,7 @@ fn pairwise_sums<T: ControlPoint>(right: &mut [T], left: &mut [T]) {
             right[i] = right[i] + right[i + 1];
         }
         scale *= 0.5;
-        if let Some(l) = left.get_mut(r) {
-            *l = right[0] * scale;
-        }
+        left[r] = right[0] * scale;
     }
     // right[i] holds Sᵢⁿ⁻ⁱ: scale it by 2⁻⁽ⁿ⁻ⁱ⁾.
     let mut scale = 1.0;

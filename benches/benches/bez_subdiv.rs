@@ -97,7 +97,9 @@ fn versus_peers(c: &mut Criterion) {
 
 /// One degree-25 curve, each mode, throughput in output points (target: < 0.3 µs per point).
 fn degree_25_per_point(c: &mut Criterion) {
-    let curve = random_curve::<2>(25, 125);
+    let Some(curve) = bez_subdiv::cases::degree25_curve() else {
+        return;
+    };
     let options = FlattenOptions::default();
     let tol = options.tolerance * bez_subdiv::curve_size(&curve);
     let mut g = c.benchmark_group("flatten_degree25_per_point");

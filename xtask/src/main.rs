@@ -18,6 +18,7 @@ mod figures;
 mod papers;
 mod plot;
 mod tables;
+mod timing;
 mod venv;
 
 use std::path::PathBuf;

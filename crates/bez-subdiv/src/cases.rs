@@ -75,6 +75,14 @@ pub fn looped() -> Option<BezierCurve<2>> {
     BezierCurve::new(vec![v(0.0, 0.0), v(2.0, 2.0), v(-1.0, 2.0), v(1.0, 0.0)]).ok()
 }
 
+/// The degree-25 curve of the per-output-point speed target (the benchmark
+/// `flatten_degree25_per_point` and `cargo xtask tables`): the degree-25 curve of
+/// [`nstar_curves`].
+#[must_use]
+pub fn degree25_curve() -> Option<BezierCurve<2>> {
+    random_curves(25, 1, 7 + 25).into_iter().next()
+}
+
 /// The curves of the N* comparison, named: one seeded random curve of degree 3, 12 and 25
 /// (seed 7 + degree), the cusp and the loop.
 #[must_use]

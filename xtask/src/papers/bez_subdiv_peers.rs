@@ -5,7 +5,6 @@
 
 use std::fmt::Write as _;
 use std::hint::black_box;
-use std::time::Instant;
 
 use bez_core::{BezierCurve, Vector2};
 use bez_subdiv::cases::peer_cubics;
@@ -13,14 +12,16 @@ use serde_json::{Value, json};
 
 use crate::DynError;
 use crate::tables::Table;
+use crate::timing::{Run, best_micros};
 
 /// ε of eq. (3); the absolute tolerance of every method is ε × the curve's size.
 const EPS: f64 = 1e-5;
 
-/// The Table 1 and N* tables followed by the peer table.
+/// The Table 1 and N* tables followed by the peer and per-point tables.
 pub(crate) fn tables() -> Result<Vec<Table>, DynError> {
     let mut tables = super::bez_subdiv::tables()?;
     tables.push(table()?);
+    tables.push(super::bez_subdiv_per_point::table()?);
     Ok(tables)
 }
 
@@ -115,27 +116,30 @@ fn lyon_flatten(c: &BezierCurve<2>, tol: f64, out: &mut Vec<Vector2<f64>>) -> Re
     Ok(())
 }
 
-/// Rounds of the interleaved timing, and calls per method in each round.
-const ROUNDS: usize = 40;
-const CALLS: usize = 100;
+/// Rounds of the interleaved timing, and the wall time of each (cubic, method) in a round (µs).
+const ROUNDS: usize = 60;
+const ROUND_MICROS: f64 = 300.0;
 
-/// Time of one call in µs for each method: every round runs each method `CALLS` times in turn,
-/// and a method's time is its fastest round. Interleaving exposes all methods to the same load,
-/// and the minimum discards the rounds a busy machine slowed down.
-fn best_micros(c: &BezierCurve<2>, tol: f64, methods: &[Method]) -> Result<Vec<f64>, DynError> {
-    let mut best = vec![f64::INFINITY; methods.len()];
-    let mut out = Vec::new();
-    for _ in 0..ROUNDS {
-        for (method, best) in methods.iter().zip(&mut best) {
-            let start = Instant::now();
-            for _ in 0..CALLS {
-                (method.1)(black_box(c), tol, &mut out)?;
+/// Time of one call in µs for each method on each cubic ([`best_micros`], every pair in every
+/// round, so that each pair's rounds spread over the whole measurement), row-major by cubic;
+/// output written into one buffer per pair, reused across calls.
+fn method_micros(
+    cubics: &[(String, BezierCurve<2>)],
+    methods: &[Method],
+) -> Result<Vec<f64>, DynError> {
+    let mut runs: Vec<Run<'_>> = Vec::new();
+    for (_, c) in cubics {
+        let tol = EPS * bez_subdiv::curve_size(c);
+        for &(_, flatten) in methods {
+            let mut out = Vec::new();
+            runs.push(Box::new(move || {
+                flatten(black_box(c), tol, &mut out)?;
                 black_box(&out);
-            }
-            *best = best.min(start.elapsed().as_secs_f64() * 1e6 / CALLS as f64);
+                Ok(())
+            }));
         }
     }
-    Ok(best)
+    best_micros(&mut runs, ROUNDS, ROUND_MICROS)
 }
 
 /// The peer table: segments, measured error / tol and time per method and cubic.
@@ -143,21 +147,22 @@ pub(crate) fn table() -> Result<Table, DynError> {
     let mut md = format!(
         "### bez-subdiv beside kurbo and lyon_geom: cubics at the same absolute tolerance (tol = {EPS} × size)\n\n\
          Error: measured Hausdorff distance between polyline and curve (20,001 curve samples to the polyline, exact nearest curve points from 5 points per segment) divided by tol.\n\
-         Time: in-process, interleaved: {ROUNDS} rounds of {CALLS} calls of every method in turn, each method's fastest round, on the machine that wrote this file, output written into one reused `Vec` (the guaranteed mode returns a new one); not checked. Ratio: time / kurbo's time on the same curve.\n\n\
+         Time: in-process, interleaved: {ROUNDS} rounds, each of which calls every method on every cubic in turn for about {ROUND_MICROS} µs; a method's time is its fastest round, on the machine that wrote this file, output written into one reused `Vec` (the guaranteed mode returns a new one); not checked. Ratio: time / kurbo's time on the same curve.\n\n\
          | curve | method | segments | error / tol | time (µs) | time per segment (ns) | ratio to kurbo |\n\
          |---|---|---|---|---|---|---|\n"
     );
     let mut rows = Vec::new();
-    for (name, c) in peer_cubics() {
-        let tol = EPS * bez_subdiv::curve_size(&c);
-        let methods = methods();
-        let micros = best_micros(&c, tol, &methods)?;
+    let cubics = peer_cubics();
+    let methods = methods();
+    let times = method_micros(&cubics, &methods)?;
+    for ((name, c), micros) in cubics.iter().zip(times.chunks(methods.len())) {
+        let tol = EPS * bez_subdiv::curve_size(c);
         let kurbo = micros[KURBO];
-        for (method, micros) in methods.iter().zip(micros) {
+        for (method, &micros) in methods.iter().zip(micros) {
             let mut poly = Vec::new();
-            (method.1)(&c, tol, &mut poly)?;
+            (method.1)(c, tol, &mut poly)?;
             let segments = poly.len().saturating_sub(1);
-            let err = super::bez_subdiv::hausdorff(&c, &poly)? / tol;
+            let err = super::bez_subdiv::hausdorff(c, &poly)? / tol;
             writeln!(
                 md,
                 "| {name} | {} | {segments} | {err:.3} | {micros:.2} | {:.1} | {:.2} |",

@@ -8,6 +8,7 @@ use std::path::{Path, PathBuf};
 mod bez_core;
 mod bez_subdiv;
 mod bez_subdiv_peers;
+mod bez_subdiv_per_point;
 mod class_a;
 mod lambda_bezier;
 mod pde_bezier;

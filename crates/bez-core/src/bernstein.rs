@@ -79,7 +79,7 @@ pub(crate) fn powi(x: f64, k: usize) -> f64 {
 
 /// All Bernstein polynomials of degree `out.len() − 1` at `t`, written into `out` without allocating.
 ///
-/// out[i] = B_{i,n}(t), n = out.len() − 1. Cost O(n). The values sum to 1 up to rounding
+/// out\[i\] = B_{i,n}(t), n = out.len() − 1. Cost O(n). The values sum to 1 up to rounding
 /// (partition of unity). An empty `out` is left alone.
 ///
 /// # Examples

@@ -1,16 +1,4 @@
 //! Subdivision at t = ½ (midpoint subdivision) by pairwise sums.
-//!
-//! At t = ½ de Casteljau's recurrence Pᵢʳ = ½ Pᵢʳ⁻¹ + ½ Pᵢ₊₁ʳ⁻¹ (Ma et al. 2016, eq. (1), index
-//! corrected) is Pᵢʳ = 2⁻ʳ Sᵢʳ with the pairwise sums Sᵢ⁰ = Pᵢ, Sᵢʳ = Sᵢʳ⁻¹ + Sᵢ₊₁ʳ⁻¹. Computing
-//! the sums and scaling each output point once takes n(n + 1)/2 additions and 2n multiplications
-//! for degree n, against n(n + 1)/2 times two multiplications and an addition, and the chain of
-//! dependent operations per level is one addition instead of a multiplication and an addition.
-//!
-//! Multiplying by a power of two is exact and commutes with rounding, so
-//! fl(½ a + ½ b) = fl(a + b) · ½ and, by induction on r, the result equals
-//! [`de_casteljau_split`](crate::de_casteljau_split) at t = 0.5 bit for bit, as long as no sum
-//! overflows and no value is subnormal. Both hold when every coordinate is zero or between 1e-250
-//! and 1e250 in magnitude, up to degree 100. Outside that range the two differ by rounding only.
 
 use crate::CoreError;
 use crate::casteljau::{ControlPoint, check_buffer_lengths};
@@ -18,8 +6,17 @@ use crate::casteljau::{ControlPoint, check_buffer_lengths};
 /// Splits a control polygon at t = ½ into the control polygons of B on [0, ½] and [½, 1], by
 /// pairwise sums: `left` receives 2⁻ʳ S₀ʳ (r = 0..n), `right` receives 2⁻⁽ⁿ⁻ⁱ⁾ Sᵢⁿ⁻ⁱ.
 ///
-/// Equal to `de_casteljau_split(points, 0.5, left, right)` bit for bit (see the [module
-/// docs](self) for the range), with about a third of the floating-point operations. Cost O(n²).
+/// At t = ½ de Casteljau's recurrence Pᵢʳ = ½ Pᵢʳ⁻¹ + ½ Pᵢ₊₁ʳ⁻¹ (Ma et al. 2016, eq. (1), index
+/// corrected) is Pᵢʳ = 2⁻ʳ Sᵢʳ with the pairwise sums Sᵢ⁰ = Pᵢ, Sᵢʳ = Sᵢʳ⁻¹ + Sᵢ₊₁ʳ⁻¹. The sums
+/// and one scaling per output point take n(n + 1)/2 additions and 2n multiplications for degree
+/// n, against n(n + 1)/2 times two multiplications and an addition, and the chain of dependent
+/// operations per level is one addition instead of a multiplication and an addition. Cost O(n²).
+///
+/// Multiplying by a power of two is exact and commutes with rounding, so
+/// fl(½ a + ½ b) = fl(a + b) · ½ and, by induction on r, the result equals
+/// `de_casteljau_split(points, 0.5, left, right)` bit for bit as long as no sum overflows and no
+/// value is subnormal. Both hold when every coordinate is zero or between 1e-250 and 1e250 in
+/// magnitude, up to degree 100; outside that range the two differ by rounding only.
 ///
 /// # Errors
 /// [`CoreError::BufferLength`] when `left` or `right` does not have the length of `points`.
@@ -72,8 +69,8 @@ pub fn de_casteljau_halve_in_place<T: ControlPoint>(
 /// [`de_casteljau_halve`] of a control polygon of fixed size `N`, by value: `(left, right)`.
 ///
 /// The same sums in the same order, so the result equals `de_casteljau_halve`'s (and, in the
-/// range of the [module docs](self), `de_casteljau_split_array(points, 0.5)`'s) bit for bit; with
-/// `N` known at compile time the loops unroll and the pieces can stay in registers.
+/// range given there, `de_casteljau_split_array(points, 0.5)`'s) bit for bit; with `N` known at
+/// compile time the loops unroll and the pieces can stay in registers.
 #[must_use]
 #[inline]
 pub fn de_casteljau_halve_array<T: ControlPoint, const N: usize>(

@@ -169,6 +169,27 @@ fn error_table(rows: &[Row], rms: bool) -> Table {
     }
 }
 
+/// The number of unknowns of `case` and the max error of each method of [`Method::ALL`].
+fn max_errors(case: &Case) -> Result<(usize, Vec<f64>), DynError> {
+    let assembly = Assembly::new(&case.problem, &case.disc)?;
+    let vals = Method::ALL
+        .into_iter()
+        .map(|method| {
+            let sol = assembly.solve(method)?;
+            Ok(sol
+                .surface
+                .error_norms(|u, v| case.exact.eval(u, v), TAU)?
+                .max)
+        })
+        .collect::<Result<Vec<f64>, DynError>>()?;
+    Ok((assembly.unknowns(), vals))
+}
+
+/// Table cells " 1.23e-4 |" for `vals`.
+fn cells(vals: &[f64]) -> String {
+    vals.iter().map(|&v| format!(" {} |", sci(v))).collect()
+}
+
 fn convergence_table() -> Result<Table, DynError> {
     let mut md = String::new();
     let mut checked = Vec::new();
@@ -185,16 +206,8 @@ fn convergence_table() -> Result<Table, DynError> {
     for n in [3, 4, 5, 6, 7, 8] {
         let mut case = cases::circle_sphere_blend(3.0, std::f64::consts::FRAC_PI_2)?;
         case.disc = Discretization::single(n, n);
-        let assembly = Assembly::new(&case.problem, &case.disc)?;
-        let mut line = format!("| {n} |");
-        let mut vals = Vec::new();
-        for method in Method::ALL {
-            let sol = assembly.solve(method)?;
-            let e = sol.surface.error_norms(|u, v| case.exact.eval(u, v), TAU)?;
-            let _ = write!(line, " {} |", sci(e.max));
-            vals.push(e.max);
-        }
-        let _ = writeln!(md, "{line}");
+        let vals = max_errors(&case)?.1;
+        let _ = writeln!(md, "| {n} |{}", cells(&vals));
         checked.push(json!({"table": "degree", "n": n, "max": vals}));
     }
     let _ = writeln!(
@@ -209,19 +222,11 @@ fn convergence_table() -> Result<Table, DynError> {
     let mut prev: Option<f64> = None;
     for p in [1, 2, 4, 8] {
         let case = cases::enneper(3, p, p)?;
-        let assembly = Assembly::new(&case.problem, &case.disc)?;
-        let mut line = format!("| {p} | {} |", assembly.unknowns());
-        let mut vals = Vec::new();
-        for method in Method::ALL {
-            let sol = assembly.solve(method)?;
-            let e = sol.surface.error_norms(|u, v| case.exact.eval(u, v), TAU)?;
-            let _ = write!(line, " {} |", sci(e.max));
-            vals.push(e.max);
-        }
+        let (unknowns, vals) = max_errors(&case)?;
         let ours = vals[2];
         let order = prev.map_or("–".to_string(), |q| format!("{:.2}", (q / ours).log2()));
         prev = Some(ours);
-        let _ = writeln!(md, "{line} {order} |");
+        let _ = writeln!(md, "| {p} | {unknowns} |{} {order} |", cells(&vals));
         checked.push(json!({"table": "patches", "patches": p, "max": vals}));
     }
     let _ = writeln!(

@@ -1,5 +1,7 @@
 //! Adaptive subdivision ("flattening") with per-piece stopping by eq. (3).
 
+use std::time::{Duration, Instant};
+
 use bez_core::{BezierCurve, Vector2, de_casteljau_halve, de_casteljau_split};
 
 use crate::error::SubdivError;
@@ -60,7 +62,10 @@ pub struct FlattenStats {
 }
 
 /// The result of [`flatten`].
-#[derive(Debug, Clone, PartialEq)]
+///
+/// Equality compares the polyline, the pieces and the counts, not `elapsed`: two flattenings of
+/// the same input are equal.
+#[derive(Debug, Clone)]
 #[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 pub struct Flattening {
     /// The control polygons of the final pieces in order, joints not repeated.
@@ -69,6 +74,29 @@ pub struct Flattening {
     pub pieces: Vec<Piece>,
     /// Counts.
     pub stats: FlattenStats,
+    /// Wall time of the [`flatten`] call (`std::time::Instant`); `None` on targets without a
+    /// clock (wasm32-unknown-unknown, where reading it would panic).
+    pub elapsed: Option<Duration>,
+}
+
+impl PartialEq for Flattening {
+    fn eq(&self, other: &Self) -> bool {
+        self.polyline == other.polyline && self.pieces == other.pieces && self.stats == other.stats
+    }
+}
+
+/// The time since `start`, where the target has a clock.
+fn elapsed_since(start: Option<Instant>) -> Option<Duration> {
+    start.map(|s| s.elapsed())
+}
+
+/// Now, where the target has a clock.
+fn now() -> Option<Instant> {
+    if cfg!(all(target_arch = "wasm32", target_os = "unknown")) {
+        None
+    } else {
+        Some(Instant::now())
+    }
 }
 
 /// The denominator of eq. (3): max(x extent, y extent) of the original control points.
@@ -115,6 +143,7 @@ pub fn flatten(
     curve: &BezierCurve<2>,
     options: &FlattenOptions,
 ) -> Result<Flattening, SubdivError> {
+    let start = now();
     let eps = options.tolerance;
     validate(curve, eps)?;
     let n = curve.points().len();
@@ -161,12 +190,30 @@ pub fn flatten(
         polyline,
         pieces,
         stats,
+        elapsed: elapsed_since(start),
     })
 }
 
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn the_call_is_timed_and_equality_ignores_the_time() {
+        let c = BezierCurve::new(vec![
+            Vector2::new(0.0, 0.0),
+            Vector2::new(1.0, 5.0),
+            Vector2::new(2.0, 0.0),
+        ])
+        .unwrap();
+        let a = flatten(&c, &FlattenOptions::default()).unwrap();
+        let mut b = a.clone();
+        b.elapsed = None;
+        assert!(a.elapsed.is_some());
+        assert_eq!(a, b);
+        b.stats.splits += 1;
+        assert_ne!(a, b);
+    }
 
     #[test]
     fn errors_are_typed() {

@@ -197,15 +197,11 @@ pub fn flatten(
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::test_support::{assert_typed_errors, curve};
 
     #[test]
     fn the_call_is_timed_and_equality_ignores_the_time() {
-        let c = BezierCurve::new(vec![
-            Vector2::new(0.0, 0.0),
-            Vector2::new(1.0, 5.0),
-            Vector2::new(2.0, 0.0),
-        ])
-        .unwrap();
+        let c = curve(&[(0.0, 0.0), (1.0, 5.0), (2.0, 0.0)]);
         let a = flatten(&c, &FlattenOptions::default()).unwrap();
         let mut b = a.clone();
         b.elapsed = None;
@@ -217,32 +213,14 @@ mod tests {
 
     #[test]
     fn errors_are_typed() {
-        let point = BezierCurve::new(vec![Vector2::new(1.0, 2.0)]).unwrap();
-        assert_eq!(
-            flatten(&point, &FlattenOptions::default()),
-            Err(SubdivError::TooFewPoints { got: 1 })
-        );
-        let c = BezierCurve::new(vec![
-            Vector2::new(0.0, 0.0),
-            Vector2::new(1.0, 5.0),
-            Vector2::new(2.0, 0.0),
-        ])
-        .unwrap();
-        for bad in [0.0, -1.0, f64::NAN, f64::INFINITY] {
-            let o = FlattenOptions {
-                tolerance: bad,
+        assert_typed_errors(|c, tolerance, max_depth| {
+            let options = FlattenOptions {
+                tolerance,
+                max_depth,
                 ..FlattenOptions::default()
             };
-            assert!(matches!(
-                flatten(&c, &o),
-                Err(SubdivError::InvalidTolerance { .. })
-            ));
-        }
-        let o = FlattenOptions {
-            max_depth: 2,
-            ..FlattenOptions::default()
-        };
-        assert_eq!(flatten(&c, &o), Err(SubdivError::DepthLimit { limit: 2 }));
+            flatten(c, &options)
+        });
     }
 
     #[test]

@@ -76,7 +76,7 @@ impl Piece {
     /// The two halves [2m/2ʲ⁺¹, (2m + 1)/2ʲ⁺¹] and [(2m + 1)/2ʲ⁺¹, (2m + 2)/2ʲ⁺¹], right half
     /// first (pushed on a stack, the left half is taken next).
     fn halves(&self) -> [Self; 2] {
-        let (left, right) = halves(&self.b);
+        let (left, right) = halve_coefficients(&self.b);
         let m2 = &self.m << 1;
         [
             Self {
@@ -104,7 +104,7 @@ fn strip_twos(b: &mut [BigInt]) {
 }
 
 /// de Casteljau at 1/2 in integers: level r sums give 2ʳ × the true values, rescaled by 2ᴺ⁻ʳ.
-fn halves(b: &[BigInt]) -> (Vec<BigInt>, Vec<BigInt>) {
+fn halve_coefficients(b: &[BigInt]) -> (Vec<BigInt>, Vec<BigInt>) {
     let n = b.len() - 1;
     let mut c = b.to_vec();
     let mut left = Vec::with_capacity(n + 1);
@@ -324,7 +324,7 @@ mod tests {
     fn halving_matches_exact_values() {
         // (1 − 2t)² = [1, −2, 1] scaled... Bernstein [1, −1, 1]: values 1, 0, 1 at 0, 1/2, 1.
         let f = ScaledBernstein::from_bernstein(vec![1.into(), (-1).into(), 1.into()]);
-        let (l, r) = halves(&f.bernstein_times_factorial());
+        let (l, r) = halve_coefficients(&f.bernstein_times_factorial());
         assert_eq!(sign(&l[0]), 1);
         assert_eq!(sign(&l[2]), 0);
         assert_eq!(sign(&r[0]), 0);

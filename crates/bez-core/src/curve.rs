@@ -8,6 +8,7 @@ use crate::casteljau::{
     hodograph_slice,
 };
 use crate::error::{CoreError, check_unit};
+use crate::halve::de_casteljau_halve;
 
 /// A Bézier curve B(t) = Σ_{i=0}^{n} Pᵢ B_{i,n}(t), t ∈ [0, 1], in D dimensions.
 ///
@@ -275,8 +276,13 @@ impl<const D: usize> BezierCurve<D> {
         }
         let mut left = zeroed_points::<D>(n);
         let mut right = zeroed_points::<D>(n);
-        // Buffers have the right length by construction.
-        let _ = de_casteljau_split(&self.points, t, &mut left, &mut right);
+        // Buffers have the right length by construction. At t = ½ the pairwise sums give the
+        // same points with about a third of the operations.
+        let _ = if t == 0.5 {
+            de_casteljau_halve(&self.points, &mut left, &mut right)
+        } else {
+            de_casteljau_split(&self.points, t, &mut left, &mut right)
+        };
         (Self { points: left }, Self { points: right })
     }
 
@@ -396,6 +402,20 @@ impl<const D: usize> BezierCurve<D> {
 mod tests {
     use super::*;
     use nalgebra::Vector2;
+
+    #[test]
+    fn split_at_one_half_equals_de_casteljau_bit_for_bit() {
+        let c = BezierCurve::new(
+            (0..8)
+                .map(|i| Vector2::new(f64::from(i) * 0.37, f64::from(i * i % 5) - 1.3))
+                .collect(),
+        )
+        .unwrap();
+        let (left, right) = c.split(0.5).unwrap();
+        let (mut l, mut r) = (c.points().to_vec(), c.points().to_vec());
+        de_casteljau_split(c.points(), 0.5, &mut l, &mut r).unwrap();
+        assert_eq!((left.points(), right.points()), (&l[..], &r[..]));
+    }
 
     fn cubic() -> BezierCurve<2> {
         BezierCurve::new(vec![

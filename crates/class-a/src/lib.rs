@@ -62,3 +62,8 @@ pub use crate::planar::{
 pub use crate::sign::{MAX_PIECES, MAX_SUBDIVISION_DEPTH};
 pub use crate::spatial::{TypicalSpatial, rotation};
 pub use crate::spiral::{apollonius_pole, log_spiral_pole, printed_pole_eq19, spiral_deviation};
+
+/// The README's example, compiled and run with the doctests.
+#[cfg(doctest)]
+#[doc = include_str!("../README.md")]
+struct ReadmeDoctests;

@@ -46,3 +46,8 @@ pub use crate::interpolate::{shape_preserving_curves, shape_preserving_polygons}
 pub use crate::join::{Continuity, continuity, hermite_segment, join_c1, join_g1};
 pub use crate::range::{LambdaRange, lambda_range};
 pub use crate::surface::LambdaBezierSurface;
+
+/// The README's example, compiled and run with the doctests.
+#[cfg(doctest)]
+#[doc = include_str!("../README.md")]
+struct ReadmeDoctests;

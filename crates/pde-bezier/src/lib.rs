@@ -62,3 +62,8 @@ pub use problem::{Discretization, Operator, Problem, Side, SideCurve, Term};
 pub use solve::{Assembly, Method, Solution, solve};
 pub use spline_surface::BSplineSurface;
 pub use step::{read_step, write_step};
+
+/// The README's example, compiled and run with the doctests.
+#[cfg(doctest)]
+#[doc = include_str!("../README.md")]
+struct ReadmeDoctests;

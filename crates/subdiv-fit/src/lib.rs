@@ -73,3 +73,8 @@ pub use distance::{foot_point, point_polyline_distance};
 pub use error::SubdivFitError;
 pub use fit::{ErrorMeasure, Fit, FitMode, FitOptions, Insertion, RoundReport, fit};
 pub use svg::svg_path;
+
+/// The README's example, compiled and run with the doctests.
+#[cfg(doctest)]
+#[doc = include_str!("../README.md")]
+struct ReadmeDoctests;

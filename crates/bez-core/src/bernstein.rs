@@ -49,18 +49,48 @@ fn binomial_float(n: usize, k: usize) -> f64 {
 
 /// One Bernstein basis polynomial B_{i,n}(t) = C(n, i) tⁱ (1 − t)ⁿ⁻ⁱ; zero when i > n.
 ///
-/// Defined for every real t (the polynomial), not only [0, 1].
+/// Defined for every real t (the polynomial), not only [0, 1]. For t in [0, 1] the value is
+/// finite and accurate at every degree: when C(n, i) overflows or a power of t or 1 − t leaves
+/// the normal range of `f64` (degrees above about 1000, or t very close to 0 or 1), it is
+/// computed as exp(ln C(n, i) + i ln t + (n − i) ln(1 − t)) instead, with a relative error of a
+/// few times n ulps; a true value below the smallest `f64` is 0.
 ///
 /// # Examples
 /// ```
 /// assert!((bez_core::bernstein(3, 1, 0.5) - 0.375).abs() < 1e-15);
+/// // C(2000, 1000) overflows f64, B_{1000,2000}(½) ≈ 0.0178 does not.
+/// assert!((bez_core::bernstein(2000, 1000, 0.5) - 0.017839).abs() < 1e-6);
 /// ```
 #[must_use]
 pub fn bernstein(n: usize, i: usize, t: f64) -> f64 {
     if i > n {
         return 0.0;
     }
-    binomial(n, i) * powi(t, i) * powi(1.0 - t, n - i)
+    let c = binomial(n, i);
+    let (a, b) = (powi(t, i), powi(1.0 - t, n - i));
+    let direct = c * a * b;
+    let in_range = |x: f64, base: f64| x.abs() >= f64::MIN_POSITIVE || base == 0.0;
+    if (0.0..=1.0).contains(&t) && !(direct.is_finite() && in_range(a, t) && in_range(b, 1.0 - t)) {
+        return ln_bernstein(n, i, t).exp();
+    }
+    direct
+}
+
+/// ln C(n, k) as a sum of k = min(k, n − k) logarithms of exact ratios: O(min(k, n − k)).
+fn ln_binomial(n: usize, k: usize) -> f64 {
+    let k = k.min(n - k);
+    (1..=k).map(|j| ((n - k + j) as f64 / j as f64).ln()).sum()
+}
+
+/// ln B_{i,n}(t) for t in [0, 1] (−∞ where the value is exactly 0).
+fn ln_bernstein(n: usize, i: usize, t: f64) -> f64 {
+    let ln_t = if i == 0 { 0.0 } else { i as f64 * t.ln() };
+    let ln_s = if i == n {
+        0.0
+    } else {
+        (n - i) as f64 * (-t).ln_1p()
+    };
+    ln_binomial(n, i) + ln_t + ln_s
 }
 
 /// xᵏ by repeated squaring (no i32 conversion as in `f64::powi`).
@@ -79,30 +109,77 @@ pub(crate) fn powi(x: f64, k: usize) -> f64 {
 
 /// All Bernstein polynomials of degree `out.len() − 1` at `t`, written into `out` without allocating.
 ///
-/// out\[i\] = B_{i,n}(t), n = out.len() − 1. Cost O(n). The values sum to 1 up to rounding
-/// (partition of unity). An empty `out` is left alone.
+/// out\[i\] = B_{i,n}(t), n = out.len() − 1. Cost O(n) at every degree. The values sum to 1 up
+/// to rounding (partition of unity). An empty `out` is left alone.
+///
+/// Up to degree [`EXACT_BINOMIAL_DEGREE`] the row is C(n, i) tⁱ (1 − t)ⁿ⁻ⁱ with the exact
+/// binomials of [`binomial`] (the same bits as [`bernstein`]). For t in [0, 1] at higher degrees,
+/// or where a power of t or 1 − t leaves the normal `f64` range, it starts from the largest term
+/// i = ⌊nt⌋ in logarithmic form and walks outwards with the ratio
+/// B_{i+1,n} / B_{i,n} = (n − i)/(i + 1) · t/(1 − t), so nothing overflows: every value is finite
+/// and terms below the smallest `f64` are 0.
 ///
 /// # Examples
 /// ```
 /// let mut row = [0.0; 4];
 /// bez_core::bernstein_row(0.5, &mut row);
 /// assert_eq!(row, [0.125, 0.375, 0.375, 0.125]);
+///
+/// let mut big = vec![0.0; 5001];
+/// bez_core::bernstein_row(0.3, &mut big);
+/// assert!((big.iter().sum::<f64>() - 1.0).abs() < 1e-9);
 /// ```
 pub fn bernstein_row(t: f64, out: &mut [f64]) {
     let Some(n) = out.len().checked_sub(1) else {
         return;
     };
+    let inside = (0.0..=1.0).contains(&t);
+    if n > EXACT_BINOMIAL_DEGREE && inside {
+        bernstein_row_from_mode(t, out);
+        return;
+    }
     let s = 1.0 - t;
-    // Powers tⁱ left to right, then multiply (1 − t)ⁿ⁻ⁱ right to left.
+    // Exact binomials by C(n, i) = C(n, i − 1)(n − i + 1)/i in 128-bit integers (exact at every
+    // step up to EXACT_BINOMIAL_DEGREE), with powers tⁱ left to right.
+    let mut c: u128 = 1;
     let mut tp = 1.0;
+    let mut underflow = false;
     for (i, o) in out.iter_mut().enumerate() {
-        *o = binomial(n, i) * tp;
+        if i > 0 {
+            c = c * (n - i + 1) as u128 / i as u128;
+        }
+        *o = c as f64 * tp;
+        underflow |= tp.abs() < f64::MIN_POSITIVE && t != 0.0;
         tp *= t;
     }
+    // Then (1 − t)ⁿ⁻ⁱ right to left.
     let mut sp = 1.0;
     for o in out.iter_mut().rev() {
         *o *= sp;
+        underflow |= sp.abs() < f64::MIN_POSITIVE && s != 0.0;
         sp *= s;
+    }
+    if underflow && inside {
+        bernstein_row_from_mode(t, out);
+    }
+}
+
+/// The row for t in [0, 1] from its largest term outwards (see [`bernstein_row`]).
+fn bernstein_row_from_mode(t: f64, out: &mut [f64]) {
+    let n = out.len() - 1;
+    if t == 0.0 || t == 1.0 {
+        out.fill(0.0);
+        out[if t == 0.0 { 0 } else { n }] = 1.0;
+        return;
+    }
+    let mode = ((n as f64 * t) as usize).min(n);
+    out[mode] = ln_bernstein(n, mode, t).exp();
+    let r = t / (1.0 - t);
+    for i in mode + 1..=n {
+        out[i] = out[i - 1] * ((n - i + 1) as f64 / i as f64 * r);
+    }
+    for i in (0..mode).rev() {
+        out[i] = out[i + 1] * ((i + 1) as f64 / (n - i) as f64 / r);
     }
 }
 
@@ -243,6 +320,93 @@ mod tests {
                 }
             }
         }
+    }
+
+    /// The previous O(n²) row: `binomial` per entry times tⁱ, then times (1 − t)ⁿ⁻ⁱ, with the
+    /// powers as running products.
+    fn direct_row(t: f64, n: usize) -> Vec<f64> {
+        let mut tp = 1.0;
+        let mut row: Vec<f64> = (0..=n)
+            .map(|i| {
+                let v = binomial(n, i) * tp;
+                tp *= t;
+                v
+            })
+            .collect();
+        let mut sp = 1.0;
+        for o in row.iter_mut().rev() {
+            *o *= sp;
+            sp *= 1.0 - t;
+        }
+        row
+    }
+
+    #[test]
+    fn bernstein_row_is_bit_identical_to_the_direct_formula_up_to_the_exact_degree() {
+        for n in 0..=EXACT_BINOMIAL_DEGREE {
+            let mut row = vec![0.0; n + 1];
+            for &t in &[0.0, 0.013, 0.1, 0.25, 0.5, 0.77, 0.999, 1.0] {
+                bernstein_row(t, &mut row);
+                let direct = direct_row(t, n);
+                // Same bits wherever the direct formula stays in the normal range (elsewhere the
+                // row is recomputed from its largest term, see the high-degree tests).
+                let exact_ends = t == 0.0 || t == 1.0;
+                if exact_ends || direct.iter().all(|v| v.abs() >= f64::MIN_POSITIVE) {
+                    assert_eq!(row, direct, "n = {n}, t = {t}");
+                }
+            }
+        }
+    }
+
+    /// B_{i,n}(p/q) exactly in rationals, rounded to f64 once.
+    fn exact_bernstein(n: usize, i: usize, p: i64, q: i64) -> f64 {
+        use num_bigint::BigInt;
+        use num_rational::BigRational;
+        use num_traits::{One, ToPrimitive};
+        let t = BigRational::new(BigInt::from(p), BigInt::from(q));
+        let s = BigRational::one() - &t;
+        let mut c = BigInt::one();
+        for j in 1..=i {
+            c = c * BigInt::from(n - i + j) / BigInt::from(j);
+        }
+        let v = BigRational::from_integer(c) * num_traits::pow(t, i) * num_traits::pow(s, n - i);
+        v.to_f64().unwrap_or(f64::NAN)
+    }
+
+    #[test]
+    fn high_degree_values_are_finite_and_match_exact_rationals() {
+        for &(n, p, q) in &[
+            (1500, 3, 8),
+            (2000, 1, 2),
+            (5000, 1, 1000),
+            (1200, 999, 1000),
+        ] {
+            let t = p as f64 / q as f64;
+            let mut row = vec![0.0; n + 1];
+            bernstein_row(t, &mut row);
+            assert!(row.iter().all(|v| v.is_finite() && *v >= 0.0), "n = {n}");
+            assert!((row.iter().sum::<f64>() - 1.0).abs() < 1e-10, "n = {n}");
+            let mode = (n as f64 * t) as usize;
+            for i in [0, 1, mode / 2, mode, (mode + n) / 2, n - 1, n] {
+                let exact = exact_bernstein(n, i, p, q);
+                for value in [row[i], bernstein(n, i, t)] {
+                    let scale = exact.abs().max(1e-300);
+                    assert!(
+                        (value - exact).abs() <= 1e-10 * scale,
+                        "B_{{{i},{n}}}({t}) = {value}, exact {exact}"
+                    );
+                }
+            }
+        }
+    }
+
+    #[test]
+    fn tiny_parameters_keep_representable_values() {
+        // t¹¹⁰ underflows, B_{110,1500}(10⁻³) ≈ 1e-158 does not.
+        let exact = exact_bernstein(1500, 110, 1, 1000);
+        assert!(exact > 1e-200);
+        let v = bernstein(1500, 110, 1e-3);
+        assert!((v - exact).abs() <= 1e-10 * exact, "{v} vs {exact}");
     }
 
     #[test]

@@ -5,6 +5,8 @@
 //!   deterministic values with the committed JSON instead and fails with a readable diff.
 //! - `cargo xtask figures [--only PAPER]` writes the papers' figures as SVG to `docs/figures/`.
 //! - `cargo xtask cad-check` reads pde-bezier's STEP and IGES export with Open CASCADE.
+//! - `cargo xtask build-weight [--rounds N]` measures each library crate's cold release build
+//!   beside kurbo's and lyon_geom's into `docs/results/build-weight.md`.
 //! - `cargo xtask scipy` compares subdiv-fit with SciPy's `splprep` and writes
 //!   `docs/results/subdiv-fit-scipy.md` and `.json` (optional, needs Python 3).
 #![allow(
@@ -13,6 +15,7 @@
     reason = "a command-line tool talks to its user"
 )]
 
+mod build_weight;
 mod cad_check;
 mod figures;
 mod papers;
@@ -43,11 +46,13 @@ fn try_main() -> Result<(), DynError> {
     let (cmd, rest) = args.split_first().map_or(("", &[][..]), |(c, r)| (*c, r));
     let mut check = false;
     let mut only: Option<&str> = None;
+    let mut rounds = 1;
     let mut it = rest.iter();
     while let Some(&a) = it.next() {
         match a {
             "--check" => check = true,
             "--only" => only = Some(it.next().copied().ok_or("--only needs a paper name")?),
+            "--rounds" => rounds = it.next().ok_or("--rounds needs a number")?.parse()?,
             other => return Err(format!("unknown argument `{other}`\n{HELP}").into()),
         }
     }
@@ -56,6 +61,7 @@ fn try_main() -> Result<(), DynError> {
         "figures" if !check => figures::run(only),
         "cad-check" if !check && only.is_none() => cad_check::run(),
         "scipy" if !check && only.is_none() => papers::subdiv_fit_scipy::run(),
+        "build-weight" if !check && only.is_none() => build_weight::run(rounds),
         _ => {
             println!("{HELP}");
             Ok(())
@@ -67,6 +73,7 @@ const HELP: &str = "usage:
   cargo xtask tables [--check] [--only PAPER]   recompute the papers' tables (--check: compare with docs/results)
   cargo xtask figures [--only PAPER]            write the papers' figures to docs/figures
   cargo xtask cad-check                         read pde-bezier's STEP/IGES export with Open CASCADE (PyPI)
+  cargo xtask build-weight [--rounds N]         cold release build of each crate beside kurbo and lyon_geom
   cargo xtask scipy                             compare subdiv-fit with SciPy's splprep (PyPI) into docs/results
 papers: bez-subdiv, lambda-bezier, class-a, subdiv-fit, pde-bezier";
 

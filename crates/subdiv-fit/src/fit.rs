@@ -3,8 +3,8 @@
 //! within tolerance.
 
 use bez_core::SVector;
-use nalgebra::DMatrix;
 
+use crate::banded::CyclicBand;
 use crate::bspline::bspline_basis;
 use crate::curvature::feature_points;
 use crate::curve::combine;
@@ -409,8 +409,9 @@ fn least_squares<const D: usize>(
     if u == 0 {
         return Ok(curve.clone());
     }
-    let mut ata = DMatrix::<f64>::zeros(u, u);
-    let mut atb = DMatrix::<f64>::zeros(u, D);
+    // Normal equations in band-plus-corners form (O(u) memory and time, see `banded`).
+    let mut ata = CyclicBand::zeros(u);
+    let mut atb = vec![[0.0; D]; u];
     for j in 0..curve.segment_count() {
         let (a, b) = segment_range(fitting, j, n);
         let ctrl = curve.segment_controls(j)?;
@@ -429,22 +430,23 @@ fn least_squares<const D: usize>(
             }
             for &(c1, w1) in &coeffs {
                 for &(c2, w2) in &coeffs {
-                    ata[(c1, c2)] += w1 * w2;
+                    if c1 >= c2 && !ata.add_lower(c1, c2, w1 * w2) {
+                        return Err(SubdivFitError::SingularSystem { size: u });
+                    }
                 }
-                for c in 0..D {
-                    atb[(c1, c)] += w1 * rhs[c];
+                for (c, b) in atb[c1].iter_mut().enumerate() {
+                    *b += w1 * rhs[c];
                 }
             }
         }
     }
     let sol = ata
-        .cholesky()
-        .map(|ch| ch.solve(&atb))
+        .solve(&atb)
         .ok_or(SubdivFitError::SingularSystem { size: u })?;
     let mut points = curve.points().to_vec();
     for (i, slot) in unknown.iter().enumerate() {
         if let Some(col) = slot {
-            points[i] = SVector::<f64, D>::from_fn(|c, _| sol[(*col, c)]);
+            points[i] = SVector::<f64, D>::from(sol[*col]);
         }
     }
     if !points.iter().all(|p| p.iter().all(|c| c.is_finite())) {

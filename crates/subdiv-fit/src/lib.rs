@@ -53,6 +53,7 @@
 //! # Ok::<(), subdiv_fit::SubdivFitError>(())
 //! ```
 
+mod banded;
 mod bspline;
 pub mod cases;
 mod curvature;

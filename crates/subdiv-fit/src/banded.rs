@@ -7,6 +7,10 @@
 //! border: M = [[A, B], [Bᵀ, C]], A banded, C of size 3. Cholesky of the band (no fill-in outside
 //! it), W = L⁻¹B, and the 3 × 3 Schur complement S = C − WᵀW give the solve in O(u) time and
 //! memory, where the dense normal equations took O(u²) memory and O(u³) time.
+#![allow(
+    clippy::needless_range_loop,
+    reason = "factorizations read clearest with the matrix indices of their formulas"
+)]
 
 /// Half-width of the band: a data point couples unknowns at most this far apart.
 pub(crate) const HALF_WIDTH: usize = 3;
@@ -325,9 +329,9 @@ mod tests {
         assert!(!band.add_lower(2, 10, 1.0));
         assert!(band.add_lower(19, 1, 1.0));
         // The zero matrix is singular.
-        assert!(CyclicBand::zeros(20).solve(&vec![[1.0]; 20]).is_none());
-        assert!(CyclicBand::zeros(5).solve(&vec![[1.0]; 5]).is_none());
-        assert!(band.solve(&vec![[1.0]; 3]).is_none());
+        assert!(CyclicBand::zeros(20).solve(&[[1.0]; 20]).is_none());
+        assert!(CyclicBand::zeros(5).solve(&[[1.0]; 5]).is_none());
+        assert!(band.solve(&[[1.0]; 3]).is_none());
     }
 
     #[test]

@@ -42,6 +42,7 @@
 mod arclen;
 mod bbox;
 mod bernstein;
+mod bezier_form;
 mod casteljau;
 mod curve;
 mod differential;
@@ -65,6 +66,7 @@ pub use crate::bernstein::{
     EXACT_BINOMIAL_DEGREE, bernstein, bernstein_derivative, bernstein_derivative_coeffs,
     bernstein_elevate, bernstein_product, bernstein_row, binomial, eval_bernstein_poly,
 };
+pub use crate::bezier_form::BezierForm;
 pub use crate::casteljau::{
     ControlPoint, HornerBernstein, compensated_de_casteljau, de_casteljau, de_casteljau_in_place,
     de_casteljau_split, de_casteljau_split_array, elevate_slice, hodograph_slice, lerp,

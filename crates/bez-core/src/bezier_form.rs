@@ -324,6 +324,27 @@ mod tests {
     }
 
     #[test]
+    fn oracle_check_accepts_the_truth_and_rejects_a_shifted_oracle() {
+        use crate::proptest_support::check_bezier_form;
+        // (t, t²) in Bernstein form.
+        let c = BezierCurve::new(vec![
+            Vector2::new(0.0, 0.0),
+            Vector2::new(0.5, 0.0),
+            Vector2::new(1.0, 1.0),
+        ])
+        .unwrap();
+        let pos = |t: f64| Vector2::new(t, t * t);
+        let vel = |t: f64| Vector2::new(1.0, 2.0 * t);
+        assert_eq!(check_bezier_form(&c, pos, vel, 1e-14), Ok(()));
+        let shifted = |t: f64| Vector2::new(t, t * t + 1e-9);
+        let e = check_bezier_form(&c, shifted, vel, 1e-12).unwrap_err();
+        assert!(e.starts_with("eval at t = 0"), "{e}");
+        let slow = |t: f64| Vector2::new(1.0, 2.0 * t) * (1.0 - 1e-6);
+        let e = check_bezier_form(&c, pos, slow, 1e-12).unwrap_err();
+        assert!(e.starts_with("derivative"), "{e}");
+    }
+
+    #[test]
     fn spatial_curves_implement_the_trait() {
         // (t, t², t³) in Bernstein form: length by an independent fine midpoint rule.
         let c = BezierCurve::new(vec![

@@ -4,6 +4,7 @@
 
 use std::hint::black_box;
 
+use bez_core::BezierForm;
 use bezkit_benches::{random_curve, uniform_parameters};
 use criterion::{BenchmarkId, Criterion, criterion_group, criterion_main};
 use lambda_bezier::{LambdaBasis, LambdaBezierCurve};

@@ -28,6 +28,37 @@
 //! # Ok::<(), bez_core::CoreError>(())
 //! ```
 //!
+//! ## The curve trait
+//! [`BezierForm`] is the trait of every curve on [0, 1] that is exactly a polynomial and keeps
+//! its Bézier form. An implementor lends that form ([`BezierForm::as_bezier`], a free borrow)
+//! and gets evaluation, the derivative, splitting, subsegments, arc length, the nearest point,
+//! the tight bounding box and curvature, with the checked semantics (and, for a
+//! [`BezierCurve`], the bits) of `BezierCurve`'s own methods. `BezierCurve` implements it, and
+//! so do the λ-Bézier curves, Class A curves and subdivision-curve segments of the paper crates;
+//! bez-subdiv's flatteners accept any `&C` with `C: BezierForm<2> + ?Sized`.
+//!
+//! ```
+//! use bez_core::{BezierCurve, BezierForm, Vector2};
+//!
+//! /// Generic over every curve with a Bézier form, trait objects included.
+//! fn describe<C: BezierForm<2> + ?Sized>(c: &C) -> Result<(f64, f64), bez_core::CoreError> {
+//!     let b = c.bounding_box();
+//!     Ok((c.arc_length(1e-10)?, b.max.y - b.min.y))
+//! }
+//!
+//! let arch = BezierCurve::new(vec![
+//!     Vector2::new(0.0, 0.0),
+//!     Vector2::new(1.0, 2.0),
+//!     Vector2::new(2.0, 0.0),
+//! ])?;
+//! let (length, height) = describe(&arch)?;
+//! assert_eq!(height, 1.0);
+//! assert_eq!(length, arch.arc_length(1e-10)?); // the same code, bit for bit
+//! let shapes: Vec<Box<dyn BezierForm<2>>> = vec![Box::new(arch.clone()), Box::new(arch.reverse())];
+//! assert_eq!(describe(shapes[1].as_ref())?.1, 1.0);
+//! # Ok::<(), bez_core::CoreError>(())
+//! ```
+//!
 //! ## Accuracy
 //! Subdivision and subsegments use de Casteljau (never the power basis), accurate at degree
 //! 100. [`BezierCurve::eval_many`] is O(n) per point (Horner in t/(1 − t)) and agrees with de
@@ -37,11 +68,14 @@
 //! ## Features
 //! - `serde`: `Serialize`/`Deserialize` for curves, surfaces and boxes (deserialization validates).
 //! - `glam`: conversions from and to `glam::DVec2`/`DVec3`.
-//! - `proptest-support`: strategies for random control polygons, for dependent crates' tests.
+//! - `proptest-support`: strategies for random control polygons, and
+//!   `check_bezier_form` (every method of a [`BezierForm`] implementor against an independent
+//!   oracle), for dependent crates' tests.
 
 mod arclen;
 mod bbox;
 mod bernstein;
+mod bezier_form;
 mod casteljau;
 mod curve;
 mod differential;
@@ -65,6 +99,7 @@ pub use crate::bernstein::{
     EXACT_BINOMIAL_DEGREE, bernstein, bernstein_derivative, bernstein_derivative_coeffs,
     bernstein_elevate, bernstein_product, bernstein_row, binomial, eval_bernstein_poly,
 };
+pub use crate::bezier_form::BezierForm;
 pub use crate::casteljau::{
     ControlPoint, HornerBernstein, compensated_de_casteljau, de_casteljau, de_casteljau_in_place,
     de_casteljau_split, de_casteljau_split_array, elevate_slice, hodograph_slice, lerp,

@@ -3,6 +3,7 @@
 use nalgebra::SVector;
 use proptest::prelude::*;
 
+use crate::bezier_form::BezierForm;
 use crate::curve::BezierCurve;
 
 /// Random finite control points with coordinates in [−range, range].
@@ -29,4 +30,144 @@ pub fn curve<const D: usize>(
 /// A parameter in [0, 1], including both endpoints with positive probability.
 pub fn unit_parameter() -> impl Strategy<Value = f64> {
     prop_oneof![Just(0.0), Just(1.0), 0.0..=1.0]
+}
+
+/// Checks every provided method of a [`BezierForm`] implementor against an independent oracle:
+/// `position(t)` and `velocity(t)` = C'(t), computed some other way than through the Bézier form
+/// (a basis of the curve's own family, a closed form, another representation).
+///
+/// Compared on 2001 uniform parameters: `eval`, `eval_many`, `sample_uniform`, `start`, `end`
+/// (to `tolerance`); the derivative curve (to `tolerance` · max(1, degree)); `split(0.4)` and
+/// `subsegment(0.2, 0.7)` (each piece at 21 parameters against the oracle on the mapped
+/// parameter); `arc_length(1e-12)` against composite Simpson of |velocity| on 2000 intervals
+/// (to 1e-8 · max(1, L)); `bounding_box` (contains every sample, and each face lies within
+/// h/2 · max |velocity| of the extreme sample, h the sample spacing); `nearest` for nine query
+/// points around the box (the point is the oracle's at the returned t, and the distance is at
+/// most the sampled minimum and at least that minimum less h/2 · max |velocity|).
+///
+/// # Errors
+/// A message naming the first check that failed and the values compared.
+pub fn check_bezier_form<const D: usize, C: BezierForm<D> + ?Sized>(
+    curve: &C,
+    position: impl Fn(f64) -> SVector<f64, D>,
+    velocity: impl Fn(f64) -> SVector<f64, D>,
+    tolerance: f64,
+) -> Result<(), String> {
+    let close = |what: &str, t: f64, got: SVector<f64, D>, want: SVector<f64, D>, tol: f64| {
+        let e = (got - want).norm();
+        if e <= tol {
+            Ok(())
+        } else {
+            Err(format!("{what} at t = {t}: error {e:e} > {tol:e}"))
+        }
+    };
+    let fail = |e: crate::CoreError| e.to_string();
+    const M: usize = 2000;
+    let ts: Vec<f64> = (0..=M).map(|k| k as f64 / M as f64).collect();
+    let mut many = Vec::new();
+    curve.eval_many(&ts, &mut many).map_err(fail)?;
+    let uniform = curve.sample_uniform(M + 1);
+    let hodograph = curve.derivative();
+    let dtol = tolerance * (curve.degree().max(1) as f64);
+    let (mut samples, mut max_speed) = (Vec::with_capacity(M + 1), 0.0_f64);
+    for (k, &t) in ts.iter().enumerate() {
+        let want = position(t);
+        close("eval", t, curve.eval(t).map_err(fail)?, want, tolerance)?;
+        close("eval_many", t, many[k], want, tolerance)?;
+        close("sample_uniform", t, uniform[k], want, tolerance)?;
+        let v = velocity(t);
+        close("derivative", t, hodograph.eval(t).map_err(fail)?, v, dtol)?;
+        max_speed = max_speed.max(v.norm());
+        samples.push(want);
+    }
+    close("start", 0.0, curve.start(), position(0.0), tolerance)?;
+    close("end", 1.0, curve.end(), position(1.0), tolerance)?;
+
+    let (left, right) = curve.split(0.4).map_err(fail)?;
+    let piece = curve.subsegment(0.2, 0.7).map_err(fail)?;
+    for k in 0..=20 {
+        let u = f64::from(k) / 20.0;
+        close(
+            "split (left)",
+            u,
+            left.eval(u).map_err(fail)?,
+            position(0.4 * u),
+            tolerance,
+        )?;
+        let r = 0.4 + 0.6 * u;
+        close(
+            "split (right)",
+            u,
+            right.eval(u).map_err(fail)?,
+            position(r),
+            tolerance,
+        )?;
+        let s = 0.2 + 0.5 * u;
+        close(
+            "subsegment",
+            u,
+            piece.eval(u).map_err(fail)?,
+            position(s),
+            tolerance,
+        )?;
+    }
+
+    let h = 1.0 / M as f64;
+    let simpson = (0..M / 2)
+        .map(|j| {
+            let t = 2.0 * j as f64 * h;
+            velocity(t).norm() + 4.0 * velocity(t + h).norm() + velocity(t + 2.0 * h).norm()
+        })
+        .sum::<f64>()
+        * h
+        / 3.0;
+    let length = curve.arc_length(1e-12).map_err(fail)?;
+    if (length - simpson).abs() > 1e-8 * length.max(1.0) {
+        return Err(format!("arc_length {length} but Simpson gives {simpson}"));
+    }
+
+    let gap = 0.5 * h * max_speed + tolerance;
+    let b = curve.bounding_box();
+    let Some(sampled) = crate::Aabb::from_points(&samples) else {
+        return Err("no samples".into());
+    };
+    if samples.iter().any(|p| !b.contains(p, tolerance)) {
+        return Err(format!("bounding_box {b:?} misses a sample"));
+    }
+    for d in 0..D {
+        if b.max[d] - sampled.max[d] > gap || sampled.min[d] - b.min[d] > gap {
+            return Err(format!(
+                "bounding_box {b:?} is wider than the samples {sampled:?}"
+            ));
+        }
+    }
+
+    let centre = (b.min + b.max) * 0.5;
+    let half = b.size() * 0.75 + SVector::repeat(0.1);
+    for corner in 0..9_u32 {
+        let mut q = centre;
+        for d in 0..D {
+            // Corners of a box around the curve (first two coordinates), and its centre.
+            let sign = match (corner, d) {
+                (8, _) => 0.0,
+                (_, 0) => f64::from(corner & 1) * 2.0 - 1.0,
+                (_, 1) => f64::from((corner >> 1) & 1) * 2.0 - 1.0,
+                _ => f64::from((corner >> 2) & 1) * 2.0 - 1.0,
+            };
+            q[d] += sign * half[d];
+        }
+        let n = curve.nearest(&q).map_err(fail)?;
+        close("nearest (point)", n.t, n.point, position(n.t), tolerance)?;
+        let best = samples
+            .iter()
+            .map(|p| (p - q).norm())
+            .fold(f64::INFINITY, f64::min);
+        if n.distance > best + tolerance || n.distance < best - gap {
+            return Err(format!(
+                "nearest to {q:?}: distance {} but sampled minimum {best}",
+                n.distance
+            ));
+        }
+    }
+    Ok(())
 }

@@ -2,7 +2,9 @@
 //!
 //! [`flatten`]: crate::flatten()
 
-use bez_core::{BezierCurve, Vector2, de_casteljau_halve_array, de_casteljau_halve_in_place};
+use bez_core::{
+    BezierCurve, BezierForm, Vector2, de_casteljau_halve_array, de_casteljau_halve_in_place,
+};
 
 use crate::error::SubdivError;
 use crate::flatten::{DEFAULT_MAX_DEPTH, FlattenStats, curve_size, validate};
@@ -22,7 +24,17 @@ use crate::measure::within_chord_line;
 /// # Errors
 /// As [`flatten`](crate::flatten()): [`SubdivError::TooFewPoints`],
 /// [`SubdivError::InvalidTolerance`], [`SubdivError::DepthLimit`].
-pub fn flatten_fixed_into(
+pub fn flatten_fixed_into<C: BezierForm<2> + ?Sized>(
+    curve: &C,
+    tolerance: f64,
+    max_depth: usize,
+    polyline: &mut Vec<Vector2<f64>>,
+) -> Result<FlattenStats, SubdivError> {
+    fixed_into_bezier(curve.as_bezier(), tolerance, max_depth, polyline)
+}
+
+/// [`flatten_fixed_into`] on the Bézier form (one instance for every curve type).
+fn fixed_into_bezier(
     curve: &BezierCurve<2>,
     tolerance: f64,
     max_depth: usize,

@@ -2,7 +2,7 @@
 
 use std::time::{Duration, Instant};
 
-use bez_core::{BezierCurve, Vector2, de_casteljau_halve, de_casteljau_split};
+use bez_core::{BezierCurve, BezierForm, Vector2, de_casteljau_halve, de_casteljau_split};
 
 use crate::error::SubdivError;
 use crate::measure::within_chord_line;
@@ -131,6 +131,9 @@ pub(crate) fn validate(curve: &BezierCurve<2>, eps: f64) -> Result<(), SubdivErr
 /// through its end points. Eq. (3) measures distance to the chord's *line*: near cusps a piece
 /// may fold back past an end point (see the paper doc).
 ///
+/// Accepts any curve with a Bézier form ([`BezierForm`]: a `BezierCurve`, a λ-Bézier curve, a
+/// Class A curve, a subdivision-curve segment) and flattens that form; the borrow is free.
+///
 /// Cost: O(n²) per split plus the rule's evaluations (13 or about 30 splits per optimized piece).
 /// For the fixed rule, [`flatten_fixed_into`](crate::flatten_fixed_into) computes the same
 /// polyline and counts without allocating per piece.
@@ -139,7 +142,15 @@ pub(crate) fn validate(curve: &BezierCurve<2>, eps: f64) -> Result<(), SubdivErr
 /// [`SubdivError::TooFewPoints`] for a degree-0 curve, [`SubdivError::InvalidTolerance`],
 /// [`SubdivError::DepthLimit`] when a piece is not flat at `max_depth`,
 /// [`SubdivError::Optimizer`] from an exact rule.
-pub fn flatten(
+pub fn flatten<C: BezierForm<2> + ?Sized>(
+    curve: &C,
+    options: &FlattenOptions,
+) -> Result<Flattening, SubdivError> {
+    flatten_bezier(curve.as_bezier(), options)
+}
+
+/// [`flatten`] on the Bézier form (one instance for every curve type).
+fn flatten_bezier(
     curve: &BezierCurve<2>,
     options: &FlattenOptions,
 ) -> Result<Flattening, SubdivError> {

@@ -1,6 +1,6 @@
 //! Beyond the paper: flattening with a guaranteed Hausdorff bound.
 
-use bez_core::{BezierCurve, Vector2};
+use bez_core::{BezierCurve, BezierForm, Vector2};
 
 use crate::error::SubdivError;
 use crate::fixed::halve_until;
@@ -69,13 +69,13 @@ fn within_chord_segment(piece: &[Vector2<f64>], tolerance: f64) -> bool {
 /// [`SubdivError::TooFewPoints`] for a degree-0 curve, [`SubdivError::InvalidTolerance`],
 /// [`SubdivError::DepthLimit`] when a piece is not within tolerance after `max_depth` halvings
 /// (e.g. a tolerance below the rounding level of the coordinates).
-pub fn flatten_guaranteed(
-    curve: &BezierCurve<2>,
+pub fn flatten_guaranteed<C: BezierForm<2> + ?Sized>(
+    curve: &C,
     tolerance: f64,
     max_depth: usize,
 ) -> Result<Vec<FlatPoint>, SubdivError> {
     halve_to_points(
-        curve,
+        curve.as_bezier(),
         tolerance,
         max_depth,
         |piece| within_chord_segment(piece, tolerance),

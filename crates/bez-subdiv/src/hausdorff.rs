@@ -1,6 +1,6 @@
 //! A measured Hausdorff distance between a curve and a polyline, for checking flattenings.
 
-use bez_core::{BezierCurve, Vector2};
+use bez_core::{BezierCurve, BezierForm, Vector2};
 
 use crate::error::SubdivError;
 use crate::guaranteed::distance_to_segment;
@@ -51,7 +51,16 @@ impl Default for HausdorffSampling {
 /// assert!((h - 0.5).abs() < 1e-9);
 /// # Ok::<(), bez_subdiv::SubdivError>(())
 /// ```
-pub fn measured_hausdorff(
+pub fn measured_hausdorff<C: BezierForm<2> + ?Sized>(
+    curve: &C,
+    polyline: &[Vector2<f64>],
+    sampling: HausdorffSampling,
+) -> Result<f64, SubdivError> {
+    hausdorff_bezier(curve.as_bezier(), polyline, sampling)
+}
+
+/// [`measured_hausdorff`] on the Bézier form (one instance for every curve type).
+fn hausdorff_bezier(
     curve: &BezierCurve<2>,
     polyline: &[Vector2<f64>],
     sampling: HausdorffSampling,

@@ -15,6 +15,11 @@
 //! (close to the lower bound [`optimal_segment_count`]); [`flatten_fixed_into`] is the fixed rule
 //! without allocation, and [`measured_hausdorff`] checks any of them.
 //!
+//! Every flattening entry point and [`measured_hausdorff`] take `&C` for any
+//! `C: `[`BezierForm<2>`](bez_core::BezierForm)` + ?Sized`: a `BezierCurve`, and equally a
+//! λ-Bézier curve, a Class A curve or a subdivision-curve segment of the other crates, or a
+//! `&dyn BezierForm<2>`. They flatten the exact Bézier form, which the curve lends for free.
+//!
 //! Feature `rayon`: [`flatten_batch`] flattens many curves in parallel. Feature `serde`: serde on
 //! the data types.
 //!

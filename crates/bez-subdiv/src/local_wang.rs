@@ -1,6 +1,6 @@
 //! Beyond the paper: guaranteed flattening from local a-priori bounds, O(n) per point.
 
-use bez_core::{BezierCurve, HornerBernstein};
+use bez_core::{BezierCurve, BezierForm, HornerBernstein};
 
 use crate::bound::wang_steps;
 use crate::error::SubdivError;
@@ -49,7 +49,16 @@ pub const LOCAL_WANG_STEPS: usize = 16;
 /// assert_eq!((points[0].t, points[points.len() - 1].t), (0.0, 1.0));
 /// # Ok::<(), bez_subdiv::SubdivError>(())
 /// ```
-pub fn flatten_local_wang(
+pub fn flatten_local_wang<C: BezierForm<2> + ?Sized>(
+    curve: &C,
+    tolerance: f64,
+    max_depth: usize,
+) -> Result<Vec<FlatPoint>, SubdivError> {
+    local_wang_bezier(curve.as_bezier(), tolerance, max_depth)
+}
+
+/// [`flatten_local_wang`] on the Bézier form (one instance for every curve type).
+fn local_wang_bezier(
     curve: &BezierCurve<2>,
     tolerance: f64,
     max_depth: usize,

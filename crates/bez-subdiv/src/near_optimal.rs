@@ -1,6 +1,6 @@
 //! Beyond the paper: near-optimal flattening by the curvature density √(|κ| / (8 tol)).
 
-use bez_core::{BezierCurve, Vector2};
+use bez_core::{BezierCurve, BezierForm, Vector2};
 
 use crate::chord::chord_deviation;
 use crate::error::SubdivError;
@@ -182,7 +182,16 @@ fn longest_step(
 /// [`SubdivError::InvalidTolerance`], [`SubdivError::TooFewPoints`], [`SubdivError::DepthLimit`]
 /// when no step longer than 2^−`max_depth` in parameter passes (a tolerance below the rounding
 /// level of the coordinates).
-pub fn flatten_near_optimal(
+pub fn flatten_near_optimal<C: BezierForm<2> + ?Sized>(
+    curve: &C,
+    tolerance: f64,
+    max_depth: usize,
+) -> Result<Vec<FlatPoint>, SubdivError> {
+    near_optimal_bezier(curve.as_bezier(), tolerance, max_depth)
+}
+
+/// [`flatten_near_optimal`] on the Bézier form (one instance for every curve type).
+fn near_optimal_bezier(
     curve: &BezierCurve<2>,
     tolerance: f64,
     max_depth: usize,

@@ -1,9 +1,10 @@
-//! Control points of a Class A curve from its first leg and its matrix (eqs. (2), (8)).
+//! Control points of a Class A curve from its first leg and its matrix (eqs. (2), (8)), and
+//! the curve value [`ClassACurve`].
 
-use bez_core::{BezierCurve, SVector};
+use bez_core::{BezierCurve, BezierForm, SVector};
 use nalgebra::SMatrix;
 
-use crate::ClassAError;
+use crate::{ClassAError, TypicalPlanar, TypicalSpatial};
 
 /// The degree-n Bézier curve with b₀ given and legs Δbⱼ = Mʲ Δb₀, j = 0..n−1 (eq. (2), printed
 /// with i; eq. (8): bᵢ = b₀ + Σ_{j<i} Mʲ Δb₀).
@@ -39,6 +40,100 @@ pub fn class_a_curve<const D: usize>(
         leg = m * leg;
     }
     Ok(BezierCurve::new(points)?)
+}
+
+/// A Bézier curve of eq. (2) together with its matrix: legs Δbⱼ = Mʲ Δb₀, j = 0..n−1.
+///
+/// The value type of a Class A curve in this crate: the control points are computed once, at
+/// construction, and kept (private, so they stay those of M), and the curve implements
+/// [`BezierForm`], so evaluation, derivative, splitting, arc length, nearest point, bounding box
+/// and curvature come from bez-core, and the curve goes to any consumer of `BezierForm` (the
+/// flatteners of bez-subdiv). [`TypicalPlanar`] and [`TypicalSpatial`] stay the solvers'
+/// parameters (s, θ, L, …) from which the curve is built, fallibly, by `TryFrom`.
+///
+/// Being Class A is a property this type reports, not an invariant it enforces (as the rest of
+/// the crate: NOTES): check M with [`crate::ClassAReport`] and the curve itself with
+/// [`crate::curvature_certificate`] or [`crate::torsion_certificate`].
+///
+/// ```
+/// use bez_core::{BezierForm, Vector2};
+/// use class_a::{ClassACurve, TypicalPlanar};
+///
+/// let (a0, a1, a2) = (Vector2::new(0.0, 0.0), Vector2::new(1.0, 0.0), Vector2::new(1.6, 1.0));
+/// let typical = TypicalPlanar::from_points(&a0, &a1, &a2, 7)?;
+/// let curve = ClassACurve::try_from(&typical)?;
+/// assert_eq!(curve.as_bezier(), &typical.curve()?);
+/// assert_eq!(curve.matrix(), typical.matrix());
+/// assert!((curve.end() - a2).norm() < 1e-12);
+/// let length = curve.arc_length(1e-10)?;
+/// assert!(length > (a2 - a0).norm());
+/// # Ok::<(), class_a::ClassAError>(())
+/// ```
+#[derive(Debug, Clone, PartialEq)]
+pub struct ClassACurve<const D: usize> {
+    matrix: SMatrix<f64, D, D>,
+    bezier: BezierCurve<D>,
+}
+
+impl<const D: usize> ClassACurve<D> {
+    /// The degree-n curve with first control point b₀ and legs Δbⱼ = Mʲ Δb₀ ([`class_a_curve`]).
+    ///
+    /// # Errors
+    /// As [`class_a_curve`].
+    pub fn new(
+        b0: &SVector<f64, D>,
+        delta_b0: &SVector<f64, D>,
+        m: &SMatrix<f64, D, D>,
+        degree: usize,
+    ) -> Result<Self, ClassAError> {
+        Ok(Self {
+            matrix: *m,
+            bezier: class_a_curve(b0, delta_b0, m, degree)?,
+        })
+    }
+
+    /// The matrix M of the legs.
+    #[must_use]
+    pub fn matrix(&self) -> SMatrix<f64, D, D> {
+        self.matrix
+    }
+
+    /// Consumes the curve and returns its Bézier form.
+    #[must_use]
+    pub fn into_bezier(self) -> BezierCurve<D> {
+        self.bezier
+    }
+}
+
+impl<const D: usize> BezierForm<D> for ClassACurve<D> {
+    /// The control points b₀ … bₙ of eq. (8) (stored, so the borrow is free).
+    fn as_bezier(&self) -> &BezierCurve<D> {
+        &self.bezier
+    }
+}
+
+impl TryFrom<&TypicalPlanar> for ClassACurve<2> {
+    type Error = ClassAError;
+
+    /// The curve of [`TypicalPlanar::curve`] with the matrix [`TypicalPlanar::matrix`].
+    fn try_from(t: &TypicalPlanar) -> Result<Self, ClassAError> {
+        Ok(Self {
+            matrix: t.matrix(),
+            bezier: t.curve()?,
+        })
+    }
+}
+
+impl TryFrom<&TypicalSpatial> for ClassACurve<3> {
+    type Error = ClassAError;
+
+    /// The curve of [`TypicalSpatial::curve`] with the matrix [`TypicalSpatial::matrix`].
+    fn try_from(t: &TypicalSpatial) -> Result<Self, ClassAError> {
+        Ok(Self {
+            matrix: t.matrix(),
+            bezier: t.curve()?,
+        })
+    }
 }
 
 #[cfg(test)]

@@ -43,7 +43,7 @@ pub use crate::certificate::{
     Certificate, Monotonicity, UndecidedCause, curvature_certificate, curvature_numerator,
     torsion_certificate, torsion_numerator,
 };
-pub use crate::curve::class_a_curve;
+pub use crate::curve::{ClassACurve, class_a_curve};
 pub use crate::error::ClassAError;
 pub use crate::exact::ScaledBernstein;
 pub use crate::general::{perturb2, perturb3};

@@ -3,8 +3,8 @@
 //! Where the paper gives no data (Figs. 5, 7, 8) the constructions here are ours; each says so.
 
 use bez_core::{
-    BezierCurve, Vector2, bernstein_derivative_coeffs, bernstein_product, eval_bernstein_poly,
-    roots_in_unit_interval,
+    BezierCurve, BezierForm, Vector2, bernstein_derivative_coeffs, bernstein_product,
+    eval_bernstein_poly, roots_in_unit_interval,
 };
 
 use crate::curve::LambdaBezierCurve;
@@ -85,7 +85,7 @@ pub fn max_radial_error(curve: &BezierCurve<2>) -> (f64, f64) {
 /// λ outside [−3, 1].
 pub fn circle_error(lambda: f64) -> Result<f64, LambdaError> {
     let [upper, _] = circle_halves(lambda)?;
-    Ok(max_radial_error(upper.to_bezier()).0)
+    Ok(max_radial_error(upper.as_bezier()).0)
 }
 
 /// The upper half circle as a quartic λ-curve on (−1, 0), (−1, h), (1, h), (1, 0); the paper's
@@ -103,7 +103,7 @@ pub fn lambda_half_circle_error(h: f64, lambda: f64) -> Result<f64, LambdaError>
         ],
         lambda,
     )?;
-    Ok(max_radial_error(c.to_bezier()).0)
+    Ok(max_radial_error(c.as_bezier()).0)
 }
 
 /// The classical cubic Bézier half circle (−1, 0), (−1, h), (1, h), (1, 0); h = 4/3 puts the

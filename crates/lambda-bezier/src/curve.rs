@@ -1,6 +1,6 @@
 //! `LambdaBezierCurve`: the degree n + 1 λ-Bézier curve of Definition 2, eq. (6).
 
-use bez_core::{BezierCurve, CoreError, SVector};
+use bez_core::{BezierCurve, BezierForm, CoreError, SVector};
 
 use crate::basis::corner_cut_ratio;
 use crate::error::LambdaError;
@@ -30,9 +30,19 @@ use crate::range::LambdaRange;
 /// ### Continuity
 /// See [`crate::join_g1`], [`crate::join_c1`] and [`crate::hermite_segment`].
 ///
+/// ### The Bézier form
+/// The curve implements [`BezierForm`]: [`as_bezier`](BezierForm::as_bezier) lends the exact
+/// Bézier form, and evaluation (`eval`, `eval_many`, `sample_uniform`), the derivative (the
+/// hodograph, a Bézier curve of degree n), `split`, `subsegment`, arc length, nearest point,
+/// bounding box and curvature come from the trait (bring it into scope with
+/// `use bez_core::BezierForm`), so the curve goes wherever a `BezierForm` is accepted (the
+/// flatteners of bez-subdiv). Pieces of a split are ordinary Bézier curves of degree n + 1, in
+/// general not λ-Bézier curves of the same n and λ: the λ-curves of degree n + 1 form a
+/// subspace of codimension 1 of all degree n + 1 curves.
+///
 /// ### Usage
 /// ```
-/// use bez_core::Vector2;
+/// use bez_core::{BezierForm, Vector2};
 /// use lambda_bezier::LambdaBezierCurve;
 /// let p = vec![
 ///     Vector2::new(0.0, 0.0),
@@ -41,9 +51,11 @@ use crate::range::LambdaRange;
 ///     Vector2::new(4.0, 0.0),
 /// ];
 /// let c = LambdaBezierCurve::new(p, 0.5)?;
-/// assert_eq!(c.to_bezier().degree(), 4);
+/// assert_eq!(c.degree(), 4);
 /// let d: Vector2<f64> = c.start_tangent();
 /// assert!((d - Vector2::new(3.5, 7.0)).norm() < 1e-12); // (n + λ)(P₁ − P₀)
+/// assert_eq!(c.derivative().start(), c.as_bezier().derivative().start());
+/// assert!((c.eval(0.5)? - c.as_bezier().eval(0.5)?).norm() == 0.0);
 /// # Ok::<(), lambda_bezier::LambdaError>(())
 /// ```
 #[derive(Debug, Clone, PartialEq)]
@@ -145,11 +157,6 @@ impl<const D: usize> LambdaBezierCurve<D> {
         self.points.len() - 1
     }
 
-    /// The polynomial degree n + 1.
-    pub fn degree(&self) -> usize {
-        self.points.len()
-    }
-
     /// The shape parameter λ.
     pub fn lambda(&self) -> f64 {
         self.lambda
@@ -182,41 +189,9 @@ impl<const D: usize> LambdaBezierCurve<D> {
         Ok(c)
     }
 
-    /// The exact Bézier form: degree n + 1, control points Qⱼ = (1 − αⱼ)Pⱼ₋₁ + αⱼPⱼ.
-    pub fn to_bezier(&self) -> &BezierCurve<D> {
-        &self.bezier
-    }
-
     /// Consumes the curve and returns its Bézier form (for export to any CAD system).
     pub fn into_bezier(self) -> BezierCurve<D> {
         self.bezier
-    }
-
-    /// B(t), by de Casteljau on the Bézier form.
-    ///
-    /// # Errors
-    /// t outside [0, 1] ([`CoreError::ParameterOutOfRange`]).
-    pub fn eval(&self, t: f64) -> Result<SVector<f64, D>, LambdaError> {
-        Ok(self.bezier.eval(t)?)
-    }
-
-    /// B at many parameters (O(n) each, Horner on the Bézier form); `out` is cleared first.
-    ///
-    /// # Errors
-    /// A parameter outside [0, 1].
-    pub fn eval_many(&self, ts: &[f64], out: &mut Vec<SVector<f64, D>>) -> Result<(), LambdaError> {
-        Ok(self.bezier.eval_many(ts, out)?)
-    }
-
-    /// `count` points at uniformly spaced parameters (count ≥ 2 includes both ends).
-    pub fn sample_uniform(&self, count: usize) -> Vec<SVector<f64, D>> {
-        self.bezier.sample_uniform(count)
-    }
-
-    /// The derivative curve B'(t) as an ordinary Bézier curve of degree n (the hodograph of the
-    /// Bézier form).
-    pub fn derivative(&self) -> BezierCurve<D> {
-        self.bezier.derivative()
     }
 
     /// [B(t), B'(t), …, B^{(k)}(t)].
@@ -236,16 +211,6 @@ impl<const D: usize> LambdaBezierCurve<D> {
     pub fn end_tangent(&self) -> SVector<f64, D> {
         let n = self.n();
         (n as f64 + self.lambda) * (self.points[n] - self.points[n - 1])
-    }
-
-    /// Splits at t into two ordinary Bézier curves of degree n + 1 (de Casteljau on the Bézier
-    /// form). The pieces are in general not λ-Bézier curves of the same n and λ: the λ-curves
-    /// of degree n + 1 form a subspace of codimension 1 of all degree n + 1 curves.
-    ///
-    /// # Errors
-    /// t outside [0, 1].
-    pub fn split(&self, t: f64) -> Result<(BezierCurve<D>, BezierCurve<D>), LambdaError> {
-        Ok(self.bezier.split(t)?)
     }
 
     /// The same curve traversed backwards: control points reversed, same λ (Property 3).
@@ -270,6 +235,14 @@ impl<const D: usize> LambdaBezierCurve<D> {
         f: impl Fn(&SVector<f64, D>) -> SVector<f64, D>,
     ) -> Result<Self, LambdaError> {
         Self::new(self.points.iter().map(f).collect(), self.lambda)
+    }
+}
+
+impl<const D: usize> BezierForm<D> for LambdaBezierCurve<D> {
+    /// The exact Bézier form: degree n + 1, control points Qⱼ = (1 − αⱼ)Pⱼ₋₁ + αⱼPⱼ (stored,
+    /// so the borrow is free).
+    fn as_bezier(&self) -> &BezierCurve<D> {
+        &self.bezier
     }
 }
 

@@ -134,6 +134,7 @@ mod tests {
     use super::*;
     use crate::cases::akima_data;
     use crate::join::{Continuity, continuity};
+    use bez_core::BezierForm;
 
     #[test]
     fn akima_interpolant_is_g1_monotone_and_interpolating() {
@@ -167,7 +168,7 @@ mod tests {
             }
             // Monotone Bézier polygons (x and y non-decreasing) ⇒ monotone curve.
             for c in &curves {
-                let q = c.to_bezier().points();
+                let q = c.as_bezier().points();
                 for w in q.windows(2) {
                     assert!(w[1].x >= w[0].x && w[1].y >= w[0].y - 1e-12, "{q:?}");
                 }

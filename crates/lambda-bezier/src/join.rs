@@ -8,7 +8,7 @@
 //! The λ values and degrees of the two curves are free: a joint fixes only Q₀ and Q₁.
 //! n + λ = 0 (possible at the lower end of the range for n ≤ 5) makes the tangent vanish.
 
-use bez_core::SVector;
+use bez_core::{BezierForm, SVector};
 
 use crate::curve::LambdaBezierCurve;
 use crate::error::LambdaError;

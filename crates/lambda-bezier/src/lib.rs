@@ -13,7 +13,7 @@
 //! states only for n = 2, 3, 4.
 //!
 //! ```
-//! use bez_core::Vector2;
+//! use bez_core::{BezierForm, Vector2};
 //! use lambda_bezier::{LambdaBezierCurve, LambdaRange};
 //!
 //! let p = vec![

@@ -188,7 +188,7 @@ fn to_bezier<const D: usize>(
 
 #[cfg(test)]
 mod tests {
-    use bez_core::Vector3;
+    use bez_core::{BezierForm, Vector3};
 
     use super::*;
     use crate::{LambdaBasis, LambdaBezierCurve};

@@ -63,6 +63,7 @@ pub mod eigen;
 mod error;
 mod fit;
 mod insertion;
+mod segment;
 mod svg;
 mod tridiagonal;
 
@@ -73,6 +74,7 @@ pub use curve::{CurvePoint, SubdivCurve};
 pub use distance::{foot_point, point_polyline_distance};
 pub use error::SubdivFitError;
 pub use fit::{ErrorMeasure, Fit, FitMode, FitOptions, Insertion, RoundReport, fit};
+pub use segment::Segment;
 pub use svg::svg_path;
 
 /// The README's example, compiled and run with the doctests.

@@ -5,7 +5,7 @@ use std::path::{Path, PathBuf};
 
 use argmin::core::{CostFunction, Executor, State};
 use argmin::solver::brent::BrentOpt;
-use bez_core::{BezierCurve, Vector2};
+use bez_core::{BezierCurve, BezierForm, Vector2};
 use lambda_bezier::cases::{
     AKIMA_LAMBDAS, CIRCLE_LAMBDA, QUARTIC_LAMBDAS, QUINTIC_LAMBDAS, akima_data, arch_points,
     circle_error, circle_halves, circle_points, cubic_half_circle, cubic_quarter_circle,

@@ -4,7 +4,7 @@
     reason = "test support functions outside #[test] fns unwrap known-good values"
 )]
 
-use bez_core::{SVector, Vector2, Vector3, roots_in_unit_interval};
+use bez_core::{BezierForm, SVector, Vector2, Vector3, roots_in_unit_interval};
 use lambda_bezier::{
     Continuity, LambdaBasis, LambdaBezierCurve, LambdaRange, continuity, corner_cut_ratio, join_c1,
     join_g1,

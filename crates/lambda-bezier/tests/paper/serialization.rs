@@ -1,7 +1,7 @@
 //! Serialization round trips and validation on deserialization (feature `serde`).
 #![cfg(feature = "serde")]
 
-use bez_core::Vector2;
+use bez_core::{BezierForm, Vector2};
 use lambda_bezier::{LambdaBezierCurve, LambdaBezierSurface};
 
 #[test]

@@ -8,7 +8,7 @@
 //! ```
 #![allow(clippy::print_stdout, reason = "an example reports on the terminal")]
 
-use bez_core::Vector2;
+use bez_core::{BezierForm, Vector2};
 use lambda_bezier::{LambdaBezierCurve, LambdaError, LambdaRange};
 
 fn main() -> Result<(), LambdaError> {

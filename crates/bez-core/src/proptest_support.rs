@@ -1,6 +1,6 @@
 //! Shared proptest strategies (feature `proptest-support`), for this and dependent crates.
 
-use nalgebra::SVector;
+use crate::vector::Vector;
 use proptest::prelude::*;
 
 use crate::curve::BezierCurve;
@@ -9,10 +9,10 @@ use crate::curve::BezierCurve;
 pub fn control_points<const D: usize>(
     degrees: core::ops::RangeInclusive<usize>,
     range: f64,
-) -> impl Strategy<Value = Vec<SVector<f64, D>>> {
+) -> impl Strategy<Value = Vec<Vector<D>>> {
     degrees.prop_flat_map(move |n| {
         proptest::collection::vec(
-            proptest::array::uniform::<_, D>(-range..=range).prop_map(SVector::from),
+            proptest::array::uniform::<_, D>(-range..=range).prop_map(Vector::from),
             n + 1,
         )
     })

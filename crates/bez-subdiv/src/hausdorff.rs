@@ -53,13 +53,13 @@ impl Default for HausdorffSampling {
 /// ```
 pub fn measured_hausdorff(
     curve: &BezierCurve<2>,
-    polyline: &[Vector2<f64>],
+    polyline: &[Vector2],
     sampling: HausdorffSampling,
 ) -> Result<f64, SubdivError> {
     let Some(&first) = polyline.first() else {
         return Err(SubdivError::TooFewPoints { got: 0 });
     };
-    let to_polyline = |p: &Vector2<f64>| {
+    let to_polyline = |p: &Vector2| {
         if polyline.len() == 1 {
             return (p - first).norm();
         }

@@ -1,6 +1,6 @@
 //! Control points of a Class A curve from its first leg and its matrix (eqs. (2), (8)).
 
-use bez_core::{BezierCurve, SVector};
+use bez_core::{BezierCurve, Vector};
 use nalgebra::SMatrix;
 
 use crate::ClassAError;
@@ -12,8 +12,8 @@ use crate::ClassAError;
 /// [`ClassAError::DegreeTooLow`] for n = 0, [`ClassAError::NonFinite`] for a non-finite input,
 /// [`ClassAError::Core`] if the points overflow.
 pub fn class_a_curve<const D: usize>(
-    b0: &SVector<f64, D>,
-    delta_b0: &SVector<f64, D>,
+    b0: &Vector<D>,
+    delta_b0: &Vector<D>,
     m: &SMatrix<f64, D, D>,
     degree: usize,
 ) -> Result<BezierCurve<D>, ClassAError> {
@@ -36,7 +36,7 @@ pub fn class_a_curve<const D: usize>(
     for _ in 0..degree {
         p += leg;
         points.push(p);
-        leg = m * leg;
+        leg = (m * nalgebra::SVector::<f64, D>::from(leg)).into();
     }
     Ok(BezierCurve::new(points)?)
 }

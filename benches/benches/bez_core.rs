@@ -65,16 +65,13 @@ fn split_and_elevate(c: &mut Criterion) {
 
 /// Cubic evaluation and split side by side with kurbo's `CubicBez` on the same control points.
 fn versus_kurbo(c: &mut Criterion) {
-    use bez_core::{SVector, de_casteljau_split};
+    use bez_core::{Vector, de_casteljau_split};
     use kurbo::{CubicBez, ParamCurve};
     let ours = random_curve::<2>(3, 3);
     let p = ours.points();
-    let theirs = CubicBez::new(
-        (p[0].x, p[0].y),
-        (p[1].x, p[1].y),
-        (p[2].x, p[2].y),
-        (p[3].x, p[3].y),
-    );
+    let Ok(theirs) = CubicBez::try_from(&ours) else {
+        return;
+    };
     let mut g = c.benchmark_group("cubic_vs_kurbo");
     g.bench_function("bezkit eval", |b| b.iter(|| ours.eval(black_box(0.37))));
     g.bench_function("bezkit eval (slice kernel)", |b| {
@@ -82,8 +79,8 @@ fn versus_kurbo(c: &mut Criterion) {
     });
     g.bench_function("kurbo eval", |b| b.iter(|| theirs.eval(black_box(0.37))));
     g.bench_function("bezkit split", |b| b.iter(|| ours.split(black_box(0.37))));
-    let mut left = [SVector::<f64, 2>::zeros(); 4];
-    let mut right = [SVector::<f64, 2>::zeros(); 4];
+    let mut left = [Vector::<2>::zeros(); 4];
+    let mut right = [Vector::<2>::zeros(); 4];
     g.bench_function("bezkit split (slice kernel)", |b| {
         b.iter(|| de_casteljau_split(black_box(p), black_box(0.37), &mut left, &mut right));
     });
@@ -97,11 +94,11 @@ fn versus_kurbo(c: &mut Criterion) {
 }
 
 fn surface(c: &mut Criterion) {
-    use bez_core::{BezierSurface, SVector};
-    let pts: Vec<SVector<f64, 3>> = (0..36)
+    use bez_core::{BezierSurface, Vector};
+    let pts: Vec<Vector<3>> = (0..36)
         .map(|k| {
             let (i, j) = ((k / 6) as f64, (k % 6) as f64);
-            SVector::<f64, 3>::new(i, j, (0.7 * i - 0.3 * j).sin())
+            Vector::<3>::new(i, j, (0.7 * i - 0.3 * j).sin())
         })
         .collect();
     let s =

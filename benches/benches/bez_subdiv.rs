@@ -33,26 +33,20 @@ fn rules(c: &mut Criterion) {
 /// rule, general and allocation-free path), kurbo's `flatten` and lyon_geom's
 /// `for_each_flattened`. Throughput: output segments of each method.
 fn versus_peers(c: &mut Criterion) {
-    use kurbo::{BezPath, PathEl};
     use lyon_geom::{CubicBezierSegment, point};
     let options = FlattenOptions::default();
     let mut g = c.benchmark_group("cubic_flatten_peers");
     for (name, curve) in bez_subdiv::cases::peer_cubics() {
         let p = curve.points();
         let tol = 1e-5 * bez_subdiv::curve_size(&curve);
-        let path = BezPath::from_vec(vec![
-            PathEl::MoveTo((p[0].x, p[0].y).into()),
-            PathEl::CurveTo(
-                (p[1].x, p[1].y).into(),
-                (p[2].x, p[2].y).into(),
-                (p[3].x, p[3].y).into(),
-            ),
-        ]);
+        let Ok(path) = bez_core::curves_to_bez_path(std::slice::from_ref(&curve)) else {
+            continue;
+        };
         let lyon = CubicBezierSegment {
-            from: point(p[0].x, p[0].y),
-            ctrl1: point(p[1].x, p[1].y),
-            ctrl2: point(p[2].x, p[2].y),
-            to: point(p[3].x, p[3].y),
+            from: point(p[0].x(), p[0].y()),
+            ctrl1: point(p[1].x(), p[1].y()),
+            ctrl2: point(p[2].x(), p[2].y()),
+            to: point(p[3].x(), p[3].y()),
         };
         let Ok(ours) = flatten(&curve, &options) else {
             continue;

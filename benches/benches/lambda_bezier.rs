@@ -46,7 +46,7 @@ fn eval_1000(c: &mut Criterion) {
                                 pts.iter()
                                     .zip(&row)
                                     .map(|(p, w)| p * *w)
-                                    .sum::<bez_core::Vector2<f64>>(),
+                                    .sum::<bez_core::Vector2>(),
                             );
                         }
                     }

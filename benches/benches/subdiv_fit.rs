@@ -44,10 +44,10 @@ fn fitting(c: &mut Criterion) {
     g.finish();
 }
 
-fn polyline(data: &[Vector2<f64>], closed: bool) -> BezPath {
+fn polyline(data: &[Vector2], closed: bool) -> BezPath {
     let mut p = BezPath::new();
     for (i, v) in data.iter().enumerate() {
-        let q = Point::new(v.x, v.y);
+        let q = Point::new(v.x(), v.y());
         if i == 0 {
             p.move_to(q);
         } else {

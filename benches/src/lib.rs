@@ -1,6 +1,6 @@
 //! Shared, seeded inputs for the criterion benchmarks in `benches/`.
 
-use bez_core::{BezierCurve, SVector};
+use bez_core::{BezierCurve, Vector};
 use rand::{RngExt, SeedableRng};
 use rand_chacha::ChaCha8Rng;
 
@@ -9,7 +9,7 @@ use rand_chacha::ChaCha8Rng;
 pub fn random_curve<const D: usize>(degree: usize, seed: u64) -> BezierCurve<D> {
     let mut rng = ChaCha8Rng::seed_from_u64(seed);
     let pts = (0..=degree)
-        .map(|_| SVector::<f64, D>::from_fn(|_, _| rng.random_range(-1.0..=1.0)))
+        .map(|_| Vector::<D>::from_fn(|_| rng.random_range(-1.0..=1.0)))
         .collect();
     // Finite, non-empty points: construction cannot fail.
     BezierCurve::new(pts).unwrap_or_else(|_| unreachable!("random points are finite"))

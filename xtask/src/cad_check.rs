@@ -79,7 +79,7 @@ pub(crate) fn run() -> Result<(), DynError> {
                 if !(i == 0 && j == 0) {
                     samples.push(',');
                 }
-                let _ = write!(samples, "[{u:e},{v:e},{:e},{:e},{:e}]", p.x, p.y, p.z);
+                let _ = write!(samples, "[{u:e},{v:e},{:e},{:e},{:e}]", p.x(), p.y(), p.z());
             }
         }
         samples.push(']');

@@ -42,7 +42,7 @@ fn subdiv_segment() -> subdiv_fit::Segment<2> {
 /// Flattens `curve` with every entry point and measures each polyline against the curve.
 fn flatten_all<C: BezierForm<2> + ?Sized>(curve: &C, tolerance: f64) {
     let sampling = HausdorffSampling::default();
-    let hausdorff = |poly: &[Vector2<f64>]| measured_hausdorff(curve, poly, sampling).unwrap();
+    let hausdorff = |poly: &[Vector2]| measured_hausdorff(curve, poly, sampling).unwrap();
     let points = |p: Vec<bez_subdiv::FlatPoint>| p.into_iter().map(|q| q.point).collect::<Vec<_>>();
     for (name, poly) in [
         (

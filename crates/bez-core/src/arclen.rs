@@ -71,7 +71,7 @@ fn adapt(
 #[cfg(test)]
 mod tests {
     use super::*;
-    use nalgebra::Vector2;
+    use crate::vector::Vector2;
 
     #[test]
     fn arc_length_of_parabola_matches_closed_form() {

@@ -1,6 +1,6 @@
 //! Axis-aligned bounding boxes of control polygons and of curves.
 
-use nalgebra::SVector;
+use crate::vector::Vector;
 
 use crate::curve::BezierCurve;
 use crate::roots::roots_in_unit_interval;
@@ -10,15 +10,15 @@ use crate::roots::roots_in_unit_interval;
 #[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 pub struct Aabb<const D: usize> {
     /// Componentwise minimum.
-    pub min: SVector<f64, D>,
+    pub min: Vector<D>,
     /// Componentwise maximum.
-    pub max: SVector<f64, D>,
+    pub max: Vector<D>,
 }
 
 impl<const D: usize> Aabb<D> {
     /// The smallest box containing all `points`; `None` for an empty slice.
     #[must_use]
-    pub fn from_points(points: &[SVector<f64, D>]) -> Option<Self> {
+    pub fn from_points(points: &[Vector<D>]) -> Option<Self> {
         let first = *points.first()?;
         let mut b = Self {
             min: first,
@@ -31,20 +31,20 @@ impl<const D: usize> Aabb<D> {
     }
 
     /// Grows the box to contain `p`.
-    pub fn include(&mut self, p: &SVector<f64, D>) {
+    pub fn include(&mut self, p: &Vector<D>) {
         self.min = self.min.inf(p);
         self.max = self.max.sup(p);
     }
 
     /// Edge lengths max − min.
     #[must_use]
-    pub fn size(&self) -> SVector<f64, D> {
+    pub fn size(&self) -> Vector<D> {
         self.max - self.min
     }
 
     /// Whether `p` lies in the box, with a tolerance `eps` on every side.
     #[must_use]
-    pub fn contains(&self, p: &SVector<f64, D>, eps: f64) -> bool {
+    pub fn contains(&self, p: &Vector<D>, eps: f64) -> bool {
         (0..D).all(|d| p[d] >= self.min[d] - eps && p[d] <= self.max[d] + eps)
     }
 }
@@ -90,7 +90,7 @@ impl<const D: usize> BezierCurve<D> {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use nalgebra::Vector2;
+    use crate::vector::Vector2;
 
     #[test]
     fn tight_box_of_a_symmetric_cubic() {
@@ -103,9 +103,9 @@ mod tests {
         .unwrap();
         let b = c.bounding_box();
         // y(½) = 3 is the maximum; x spans [0, 4].
-        assert!((b.max.y - 3.0).abs() < 1e-14);
+        assert!((b.max.y() - 3.0).abs() < 1e-14);
         assert_eq!(b.min, Vector2::new(0.0, 0.0));
-        assert!((b.max.x - 4.0).abs() < 1e-14);
+        assert!((b.max.x() - 4.0).abs() < 1e-14);
         assert_eq!(c.control_bounding_box().max, Vector2::new(4.0, 4.0));
     }
 }

@@ -1,7 +1,7 @@
 //! `BezierForm`: the trait of every parametric curve on [0, 1] that is exactly a polynomial and
 //! keeps its Bézier form.
 
-use nalgebra::SVector;
+use crate::vector::Vector;
 
 use crate::bbox::Aabb;
 use crate::curve::BezierCurve;
@@ -52,7 +52,7 @@ use crate::nearest::Nearest;
 ///     ])?,
 /// };
 /// assert_eq!(arch.eval(0.5)?, Vector2::new(1.0, 1.0));
-/// assert_eq!(arch.bounding_box().max.y, 1.0);
+/// assert_eq!(arch.bounding_box().max.y(), 1.0);
 /// assert_eq!(arch.derivative().degree(), 1);
 /// let (left, _) = arch.split(0.5)?;
 /// assert_eq!(left.end(), arch.eval(0.5)?);
@@ -77,13 +77,13 @@ pub trait BezierForm<const D: usize> {
 
     /// C(0), exactly the first Bézier control point.
     #[must_use]
-    fn start(&self) -> SVector<f64, D> {
+    fn start(&self) -> Vector<D> {
         self.as_bezier().start()
     }
 
     /// C(1), exactly the last Bézier control point.
     #[must_use]
-    fn end(&self) -> SVector<f64, D> {
+    fn end(&self) -> Vector<D> {
         self.as_bezier().end()
     }
 
@@ -92,7 +92,7 @@ pub trait BezierForm<const D: usize> {
     /// # Errors
     /// [`CoreError::ParameterOutOfRange`] when t ∉ [0, 1] or t is NaN.
     #[inline]
-    fn eval(&self, t: f64) -> Result<SVector<f64, D>, CoreError> {
+    fn eval(&self, t: f64) -> Result<Vector<D>, CoreError> {
         self.as_bezier().eval(t)
     }
 
@@ -101,14 +101,14 @@ pub trait BezierForm<const D: usize> {
     /// # Errors
     /// [`CoreError::ParameterOutOfRange`] for the first parameter outside [0, 1]; `out` then
     /// keeps the values computed before it.
-    fn eval_many(&self, ts: &[f64], out: &mut Vec<SVector<f64, D>>) -> Result<(), CoreError> {
+    fn eval_many(&self, ts: &[f64], out: &mut Vec<Vector<D>>) -> Result<(), CoreError> {
         self.as_bezier().eval_many(ts, out)
     }
 
     /// C(t) at `count` uniformly spaced parameters 0, 1/(count−1), …, 1, as
     /// [`BezierCurve::sample_uniform`].
     #[must_use]
-    fn sample_uniform(&self, count: usize) -> Vec<SVector<f64, D>> {
+    fn sample_uniform(&self, count: usize) -> Vec<Vector<D>> {
         self.as_bezier().sample_uniform(count)
     }
 
@@ -150,7 +150,7 @@ pub trait BezierForm<const D: usize> {
     ///
     /// # Errors
     /// [`CoreError::NonFiniteQuery`] when `p` has a NaN or infinite coordinate.
-    fn nearest(&self, p: &SVector<f64, D>) -> Result<Nearest<D>, CoreError> {
+    fn nearest(&self, p: &Vector<D>) -> Result<Nearest<D>, CoreError> {
         self.as_bezier().nearest(p)
     }
 
@@ -201,7 +201,7 @@ impl<const D: usize, C: BezierForm<D> + ?Sized> BezierForm<D> for &C {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use nalgebra::{Vector2, Vector3};
+    use crate::{Vector2, Vector3};
 
     fn cubic() -> BezierCurve<2> {
         BezierCurve::new(vec![
@@ -246,7 +246,7 @@ mod tests {
                 .flat_map(|p| p.iter().copied()),
         );
         v.extend(c.sample_uniform(5).iter().flat_map(|p| p.iter().copied()));
-        v.extend([n.t, n.distance, b.min.x, b.min.y, b.max.x, b.max.y]);
+        v.extend([n.t, n.distance, b.min.x(), b.min.y(), b.max.x(), b.max.y()]);
         v.push(c.arc_length(1e-10).unwrap());
         v.push(c.curvature(t).unwrap());
         v
@@ -281,7 +281,7 @@ mod tests {
                 .flat_map(|p| p.iter().copied()),
         );
         expected.extend(c.sample_uniform(5).iter().flat_map(|p| p.iter().copied()));
-        expected.extend([n.t, n.distance, b.min.x, b.min.y, b.max.x, b.max.y]);
+        expected.extend([n.t, n.distance, b.min.x(), b.min.y(), b.max.x(), b.max.y()]);
         expected.push(c.arc_length(1e-10).unwrap());
         expected.push(c.curvature(t).unwrap());
         expected.push(c.signed_curvature(t).unwrap());

@@ -2,7 +2,7 @@
 //!
 //! These are the hot loops every crate of the workspace runs; the curve and surface types call
 //! them. They work for any [`ControlPoint`]: `f64` (scalar polynomials in Bernstein form) and
-//! `nalgebra::SVector<f64, D>` (points in D dimensions).
+//! [`Vector<D>`](crate::Vector) (points in D dimensions).
 
 use core::ops::{Add, Mul, Sub};
 
@@ -11,7 +11,7 @@ use crate::bernstein::{binomial, powi};
 
 /// What a control point must support: affine combinations with `f64` weights, and a zero.
 ///
-/// Implemented for `f64` and for every `nalgebra::SVector<f64, D>`.
+/// Implemented for `f64` and for every [`Vector<D>`](crate::Vector).
 pub trait ControlPoint:
     Copy + Add<Output = Self> + Sub<Output = Self> + Mul<f64, Output = Self>
 {
@@ -26,7 +26,7 @@ impl ControlPoint for f64 {
     }
 }
 
-impl<const D: usize> ControlPoint for nalgebra::SVector<f64, D> {
+impl<const D: usize> ControlPoint for crate::Vector<D> {
     #[inline]
     fn zero() -> Self {
         Self::zeros()

@@ -1,6 +1,6 @@
 //! `BezierCurve`: a polynomial curve in D dimensions in Bernstein form.
 
-use nalgebra::SVector;
+use crate::vector::Vector;
 use smallvec::SmallVec;
 
 use crate::casteljau::{
@@ -48,13 +48,13 @@ pub struct BezierCurve<const D: usize> {
 
 /// Control points, stored inline up to a cubic so that splitting low-degree curves (the
 /// common case in flattening) does not allocate.
-type Points<const D: usize> = SmallVec<[SVector<f64, D>; 4]>;
+type Points<const D: usize> = SmallVec<[Vector<D>; 4]>;
 
 /// Serialized form of a curve: its control points.
 #[cfg(feature = "serde")]
 #[derive(serde::Serialize, serde::Deserialize)]
 struct CurveRepr<const D: usize> {
-    points: Vec<SVector<f64, D>>,
+    points: Vec<Vector<D>>,
 }
 
 #[cfg(feature = "serde")]
@@ -78,20 +78,20 @@ impl<const D: usize> From<BezierCurve<D>> for CurveRepr<D> {
 #[inline]
 fn zeroed_points<const D: usize>(n: usize) -> Points<D> {
     if n <= 4 {
-        SmallVec::from_buf_and_len([SVector::zeros(); 4], n)
+        SmallVec::from_buf_and_len([Vector::zeros(); 4], n)
     } else {
-        SmallVec::from_elem(SVector::zeros(), n)
+        SmallVec::from_elem(Vector::zeros(), n)
     }
 }
 
 /// de Casteljau for degree ≥ 4, kept out of line so the low-degree fast path inlines.
 #[inline(never)]
-fn eval_general<const D: usize>(points: &[SVector<f64, D>], t: f64) -> SVector<f64, D> {
-    de_casteljau(points, t).unwrap_or_else(SVector::zeros)
+fn eval_general<const D: usize>(points: &[Vector<D>], t: f64) -> Vector<D> {
+    de_casteljau(points, t).unwrap_or_else(Vector::zeros)
 }
 
 /// Checks a list of control points: non-empty and finite.
-pub(crate) fn validate_points<const D: usize>(points: &[SVector<f64, D>]) -> Result<(), CoreError> {
+pub(crate) fn validate_points<const D: usize>(points: &[Vector<D>]) -> Result<(), CoreError> {
     if points.is_empty() {
         return Err(CoreError::Empty);
     }
@@ -107,7 +107,7 @@ impl<const D: usize> BezierCurve<D> {
     /// # Errors
     /// [`CoreError::Empty`] for no points, [`CoreError::NonFinite`] for a NaN or infinite
     /// coordinate.
-    pub fn new(points: Vec<SVector<f64, D>>) -> Result<Self, CoreError> {
+    pub fn new(points: Vec<Vector<D>>) -> Result<Self, CoreError> {
         validate_points(&points)?;
         Ok(Self {
             points: SmallVec::from_vec(points),
@@ -118,12 +118,12 @@ impl<const D: usize> BezierCurve<D> {
     ///
     /// # Errors
     /// As [`Self::new`].
-    pub fn from_slice(points: &[SVector<f64, D>]) -> Result<Self, CoreError> {
+    pub fn from_slice(points: &[Vector<D>]) -> Result<Self, CoreError> {
         Self::new(points.to_vec())
     }
 
     /// Builds a curve from points already known to be valid (internal results).
-    pub(crate) fn from_valid(points: Vec<SVector<f64, D>>) -> Self {
+    pub(crate) fn from_valid(points: Vec<Vector<D>>) -> Self {
         debug_assert!(validate_points(&points).is_ok());
         Self {
             points: SmallVec::from_vec(points),
@@ -132,13 +132,13 @@ impl<const D: usize> BezierCurve<D> {
 
     /// The control points P₀ … Pₙ.
     #[must_use]
-    pub fn points(&self) -> &[SVector<f64, D>] {
+    pub fn points(&self) -> &[Vector<D>] {
         &self.points
     }
 
     /// Consumes the curve and returns its control points.
     #[must_use]
-    pub fn into_points(self) -> Vec<SVector<f64, D>> {
+    pub fn into_points(self) -> Vec<Vector<D>> {
         self.points.into_vec()
     }
 
@@ -150,13 +150,13 @@ impl<const D: usize> BezierCurve<D> {
 
     /// The first control point, B(0).
     #[must_use]
-    pub fn start(&self) -> SVector<f64, D> {
+    pub fn start(&self) -> Vector<D> {
         self.points[0]
     }
 
     /// The last control point, B(1).
     #[must_use]
-    pub fn end(&self) -> SVector<f64, D> {
+    pub fn end(&self) -> Vector<D> {
         self.points[self.points.len() - 1]
     }
 
@@ -166,7 +166,7 @@ impl<const D: usize> BezierCurve<D> {
     /// # Errors
     /// [`CoreError::ParameterOutOfRange`] when t ∉ [0, 1] or t is NaN.
     #[inline(always)]
-    pub fn eval(&self, t: f64) -> Result<SVector<f64, D>, CoreError> {
+    pub fn eval(&self, t: f64) -> Result<Vector<D>, CoreError> {
         check_unit("t", t)?;
         Ok(self.eval_unchecked(t))
     }
@@ -177,7 +177,7 @@ impl<const D: usize> BezierCurve<D> {
     /// (1, 0, …) at t = 0 and (…, 0, 1) at t = 1, so endpoints stay exact); higher degrees run
     /// de Casteljau.
     #[inline(always)]
-    pub(crate) fn eval_unchecked(&self, t: f64) -> SVector<f64, D> {
+    pub(crate) fn eval_unchecked(&self, t: f64) -> Vector<D> {
         let p = &self.points;
         let s = 1.0 - t;
         match p.len() {
@@ -201,12 +201,12 @@ impl<const D: usize> BezierCurve<D> {
     /// # Errors
     /// [`CoreError::ParameterOutOfRange`] for the first parameter outside [0, 1]; `out` is then
     /// left with the values computed before it.
-    pub fn eval_many(&self, ts: &[f64], out: &mut Vec<SVector<f64, D>>) -> Result<(), CoreError> {
+    pub fn eval_many(&self, ts: &[f64], out: &mut Vec<Vector<D>>) -> Result<(), CoreError> {
         let h = HornerBernstein::new(&self.points);
         out.reserve(ts.len());
         for &t in ts {
             check_unit("t", t)?;
-            out.push(h.eval(t).unwrap_or_else(SVector::zeros));
+            out.push(h.eval(t).unwrap_or_else(Vector::zeros));
         }
         Ok(())
     }
@@ -215,11 +215,11 @@ impl<const D: usize> BezierCurve<D> {
     ///
     /// `count` = 0 gives an empty vector and `count` = 1 gives [B(0)].
     #[must_use]
-    pub fn sample_uniform(&self, count: usize) -> Vec<SVector<f64, D>> {
+    pub fn sample_uniform(&self, count: usize) -> Vec<Vector<D>> {
         let h = HornerBernstein::new(&self.points);
         let denom = count.saturating_sub(1).max(1) as f64;
         (0..count)
-            .map(|k| h.eval(k as f64 / denom).unwrap_or_else(SVector::zeros))
+            .map(|k| h.eval(k as f64 / denom).unwrap_or_else(Vector::zeros))
             .collect()
     }
 
@@ -230,10 +230,10 @@ impl<const D: usize> BezierCurve<D> {
     ///
     /// # Errors
     /// [`CoreError::ParameterOutOfRange`] when t ∉ [0, 1].
-    pub fn eval_compensated(&self, t: f64) -> Result<SVector<f64, D>, CoreError> {
+    pub fn eval_compensated(&self, t: f64) -> Result<Vector<D>, CoreError> {
         check_unit("t", t)?;
         let mut coords = vec![0.0; self.points.len()];
-        let mut out = SVector::<f64, D>::zeros();
+        let mut out = Vector::<D>::zeros();
         for d in 0..D {
             for (c, p) in coords.iter_mut().zip(&self.points) {
                 *c = p[d];
@@ -341,14 +341,14 @@ impl<const D: usize> BezierCurve<D> {
     ///
     /// # Errors
     /// [`CoreError::ParameterOutOfRange`] when t ∉ [0, 1].
-    pub fn eval_derivatives(&self, t: f64, k: usize) -> Result<Vec<SVector<f64, D>>, CoreError> {
+    pub fn eval_derivatives(&self, t: f64, k: usize) -> Result<Vec<Vector<D>>, CoreError> {
         check_unit("t", t)?;
         Ok(self.eval_derivatives_unchecked(t, k))
     }
 
-    pub(crate) fn eval_derivatives_unchecked(&self, t: f64, k: usize) -> Vec<SVector<f64, D>> {
+    pub(crate) fn eval_derivatives_unchecked(&self, t: f64, k: usize) -> Vec<Vector<D>> {
         let n = self.degree();
-        let mut out = vec![SVector::<f64, D>::zeros(); k + 1];
+        let mut out = vec![Vector::<D>::zeros(); k + 1];
         let mut work = self.points.clone();
         let s = 1.0 - t;
         // Level 0 holds n + 1 points; level r holds n + 1 − r.
@@ -360,7 +360,7 @@ impl<const D: usize> BezierCurve<D> {
             }
             let j = n - r; // order of the derivative read off this level
             if j <= k {
-                let mut diff = SVector::<f64, D>::zeros();
+                let mut diff = Vector::<D>::zeros();
                 for (i, w) in work[..=j].iter().enumerate() {
                     let c = crate::bernstein::binomial(j, i);
                     if (j - i).is_multiple_of(2) {
@@ -401,7 +401,7 @@ impl<const D: usize> BezierCurve<D> {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use nalgebra::Vector2;
+    use crate::vector::Vector2;
 
     #[test]
     fn split_at_one_half_equals_de_casteljau_bit_for_bit() {

@@ -1,6 +1,6 @@
 //! Curvature and torsion of Bézier curves.
 
-use nalgebra::SVector;
+use crate::vector::Vector;
 
 use crate::curve::BezierCurve;
 use crate::error::{CoreError, check_unit};
@@ -20,7 +20,7 @@ impl<const D: usize> BezierCurve<D> {
         if s > 0.0 { s } else { 1.0 }
     }
 
-    fn tangent_checked(&self, t: f64, k: usize) -> Result<Vec<SVector<f64, D>>, CoreError> {
+    fn tangent_checked(&self, t: f64, k: usize) -> Result<Vec<Vector<D>>, CoreError> {
         check_unit("t", t)?;
         let d = self.eval_derivatives_unchecked(t, k);
         let n = self.degree().max(1) as f64;
@@ -55,7 +55,7 @@ impl BezierCurve<2> {
         let d = self.tangent_checked(t, 2)?;
         let (a, b) = (d[1], d[2]);
         let an = a.norm();
-        Ok((a.x * b.y - a.y * b.x) / (an * an * an))
+        Ok((a.x() * b.y() - a.y() * b.x()) / (an * an * an))
     }
 }
 
@@ -80,7 +80,7 @@ impl BezierCurve<3> {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use nalgebra::{Vector2, Vector3};
+    use crate::vector::{Vector2, Vector3};
 
     #[test]
     fn parabola_curvature_matches_analytic() {
@@ -114,7 +114,7 @@ mod tests {
         ])
         .unwrap();
         let (d0, d1) = (Vector2::new(0.0, k), Vector2::new(k - 1.0, 1.0 - k));
-        let end = 2.0 / 3.0 * (d0.x * d1.y - d0.y * d1.x).abs() / d0.norm().powi(3);
+        let end = 2.0 / 3.0 * (d0.x() * d1.y() - d0.y() * d1.x()).abs() / d0.norm().powi(3);
         assert!((c.signed_curvature(0.0).unwrap() - end).abs() < 1e-14);
         assert!((c.signed_curvature(1.0).unwrap() - end).abs() < 1e-14);
         assert!((end - 1.0).abs() < 0.1);

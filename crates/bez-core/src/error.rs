@@ -80,6 +80,35 @@ pub enum CoreError {
         /// The degree the curve has.
         degree: usize,
     },
+    /// A conversion needs a curve of one exact degree (e.g. a kurbo `CubicBez` needs 3).
+    #[error("the curve has degree {found}, the conversion needs degree {wanted}")]
+    DegreeMismatch {
+        /// The degree of the curve given.
+        found: usize,
+        /// The degree the conversion needs.
+        wanted: usize,
+    },
+    /// An operation supports curves up to some degree only (e.g. a kurbo path segment is at
+    /// most cubic).
+    #[error("the curve has degree {degree}, the operation supports degree at most {max}")]
+    DegreeTooHigh {
+        /// The largest degree the operation supports.
+        max: usize,
+        /// The degree the curve has.
+        degree: usize,
+    },
+    /// A path draws a segment (or closes) before any starting point was set.
+    #[error("path element {index} draws from no current point: the path must begin with MoveTo")]
+    PathWithoutStart {
+        /// Index of the offending path element.
+        index: usize,
+    },
+    /// A path element has a NaN or infinite coordinate.
+    #[error("path element {index} has a non-finite coordinate")]
+    NonFinitePathElement {
+        /// Index of the offending path element.
+        index: usize,
+    },
     /// A query point is not finite.
     #[error("query point has a non-finite coordinate")]
     NonFiniteQuery,

@@ -167,8 +167,8 @@ mod tests {
         fn equals_de_casteljau_at_one_half(
             pts in proptest::collection::vec((coordinate(), coordinate()), 1..31),
         ) {
-            let pts: Vec<nalgebra::Vector2<f64>> =
-                pts.into_iter().map(|(x, y)| nalgebra::Vector2::new(x, y)).collect();
+            let pts: Vec<crate::Vector2> =
+                pts.into_iter().map(|(x, y)| crate::Vector2::new(x, y)).collect();
             let n = pts.len();
             let (mut l, mut r) = (vec![pts[0]; n], vec![pts[0]; n]);
             de_casteljau_split(&pts, 0.5, &mut l, &mut r).unwrap();

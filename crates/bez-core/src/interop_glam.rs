@@ -1,36 +1,40 @@
-//! Conversions between nalgebra vectors and glam's `DVec2`/`DVec3` (feature `glam`).
+//! Conversions between [`Vector2`]/[`Vector3`] and glam's `DVec2`/`DVec3` (feature `glam`).
 //!
-//! Both types are foreign to this crate, so the conversions are functions rather than `From`
-//! impls; curves get constructors and accessors in glam types.
+//! `From` both ways (coordinates copied unchanged), plus curve constructors and accessors in
+//! glam types.
 
 use glam::{DVec2, DVec3};
-use nalgebra::{Vector2, Vector3};
 
 use crate::curve::BezierCurve;
 use crate::error::CoreError;
+use crate::vector::{Vector2, Vector3};
 
-/// `DVec2` → `Vector2<f64>`.
-#[must_use]
-pub fn from_dvec2(v: DVec2) -> Vector2<f64> {
-    Vector2::new(v.x, v.y)
+impl From<DVec2> for Vector2 {
+    #[inline]
+    fn from(v: DVec2) -> Self {
+        Self::new(v.x, v.y)
+    }
 }
 
-/// `Vector2<f64>` → `DVec2`.
-#[must_use]
-pub fn to_dvec2(v: &Vector2<f64>) -> DVec2 {
-    DVec2::new(v.x, v.y)
+impl From<Vector2> for DVec2 {
+    #[inline]
+    fn from(v: Vector2) -> Self {
+        Self::new(v.x(), v.y())
+    }
 }
 
-/// `DVec3` → `Vector3<f64>`.
-#[must_use]
-pub fn from_dvec3(v: DVec3) -> Vector3<f64> {
-    Vector3::new(v.x, v.y, v.z)
+impl From<DVec3> for Vector3 {
+    #[inline]
+    fn from(v: DVec3) -> Self {
+        Self::new(v.x, v.y, v.z)
+    }
 }
 
-/// `Vector3<f64>` → `DVec3`.
-#[must_use]
-pub fn to_dvec3(v: &Vector3<f64>) -> DVec3 {
-    DVec3::new(v.x, v.y, v.z)
+impl From<Vector3> for DVec3 {
+    #[inline]
+    fn from(v: Vector3) -> Self {
+        Self::new(v.x(), v.y(), v.z())
+    }
 }
 
 impl BezierCurve<2> {
@@ -39,13 +43,13 @@ impl BezierCurve<2> {
     /// # Errors
     /// As [`BezierCurve::new`].
     pub fn from_dvec2(points: &[DVec2]) -> Result<Self, CoreError> {
-        Self::new(points.iter().copied().map(from_dvec2).collect())
+        Self::new(points.iter().copied().map(Vector2::from).collect())
     }
 
     /// The control points as glam vectors.
     #[must_use]
     pub fn to_dvec2(&self) -> Vec<DVec2> {
-        self.points().iter().map(to_dvec2).collect()
+        self.points().iter().copied().map(DVec2::from).collect()
     }
 }
 
@@ -55,13 +59,13 @@ impl BezierCurve<3> {
     /// # Errors
     /// As [`BezierCurve::new`].
     pub fn from_dvec3(points: &[DVec3]) -> Result<Self, CoreError> {
-        Self::new(points.iter().copied().map(from_dvec3).collect())
+        Self::new(points.iter().copied().map(Vector3::from).collect())
     }
 
     /// The control points as glam vectors.
     #[must_use]
     pub fn to_dvec3(&self) -> Vec<DVec3> {
-        self.points().iter().map(to_dvec3).collect()
+        self.points().iter().copied().map(DVec3::from).collect()
     }
 }
 
@@ -77,5 +81,12 @@ mod tests {
         let p3 = [DVec3::new(0.0, 1.0, 2.0)];
         assert_eq!(BezierCurve::from_dvec3(&p3).unwrap().to_dvec3(), p3);
         assert!(BezierCurve::from_dvec2(&[DVec2::new(f64::NAN, 0.0)]).is_err());
+        let v = Vector3::new(1.0, -2.0, 3.5);
+        assert_eq!(DVec3::from(v), DVec3::new(1.0, -2.0, 3.5));
+        assert_eq!(Vector3::from(DVec3::from(v)), v);
+        assert_eq!(
+            Vector2::from(DVec2::new(0.25, 8.0)),
+            Vector2::new(0.25, 8.0)
+        );
     }
 }

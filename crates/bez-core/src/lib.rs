@@ -5,7 +5,7 @@
 //! nearest points, bounding boxes, and tensor-product surfaces. Every paper crate of the
 //! workspace stands on it.
 //!
-//! Points and vectors are `nalgebra::SVector<f64, D>` (aliases [`Vector2`], [`Vector3`]), so one
+//! Points and vectors are bez-core's own [`Vector<D>`] (aliases [`Vector2`], [`Vector3`]), so one
 //! generic implementation serves planar and spatial curves. Constructors validate their input
 //! and every fallible method returns [`CoreError`]; nothing panics on user input.
 //!
@@ -43,7 +43,7 @@
 //! /// Generic over every curve with a Bézier form, trait objects included.
 //! fn describe<C: BezierForm<2> + ?Sized>(c: &C) -> Result<(f64, f64), bez_core::CoreError> {
 //!     let b = c.bounding_box();
-//!     Ok((c.arc_length(1e-10)?, b.max.y - b.min.y))
+//!     Ok((c.arc_length(1e-10)?, b.max.y() - b.min.y()))
 //! }
 //!
 //! let arch = BezierCurve::new(vec![
@@ -66,11 +66,20 @@
 //! ill-conditioned evaluations.
 //!
 //! ## Features
-//! - `serde`: `Serialize`/`Deserialize` for curves, surfaces and boxes (deserialization validates).
-//! - `glam`: conversions from and to `glam::DVec2`/`DVec3`.
-//! - `proptest-support`: strategies for random control polygons, and
-//!   `check_bezier_form` (every method of a [`BezierForm`] implementor against an independent
-//!   oracle), for dependent crates' tests.
+//! None is enabled by default.
+//! - `serde`: `Serialize`/`Deserialize` for vectors (a flat sequence `[x, y, …]`), curves,
+//!   surfaces and boxes (deserialization validates).
+//! - `nalgebra`: `From` both ways between [`Vector<D>`] and `nalgebra::SVector<f64, D>`.
+//! - `glam`: `From` both ways between [`Vector2`]/[`Vector3`] and `glam::DVec2`/`DVec3`, and
+//!   curve constructors and accessors in glam types.
+//! - `mint`: `From` both ways between [`Vector2`]/[`Vector3`] and `mint::Point2<f64>`,
+//!   `mint::Vector2<f64>`, `mint::Point3<f64>`, `mint::Vector3<f64>`.
+//! - `kurbo`: `From` both ways between [`Vector2`] and `kurbo::Point`/`Vec2`; `Line`, `QuadBez`
+//!   and `CubicBez` into [`BezierCurve<2>`] and back (`TryFrom`, by degree); `BezPath` to and
+//!   from lists of curves (`bez_path_to_curves`, `curves_to_bez_path`).
+//! - `proptest-support`: strategies for random control polygons, and `check_bezier_form` (every
+//!   method of a [`BezierForm`] implementor against an independent oracle), for dependent
+//!   crates' tests.
 
 mod arclen;
 mod bbox;
@@ -83,15 +92,20 @@ mod error;
 mod halve;
 #[cfg(feature = "glam")]
 mod interop_glam;
+#[cfg(feature = "kurbo")]
+mod interop_kurbo;
+#[cfg(feature = "mint")]
+mod interop_mint;
+#[cfg(feature = "nalgebra")]
+mod interop_nalgebra;
 mod nearest;
 mod reduce;
 mod roots;
 mod surface;
+mod vector;
 
 #[cfg(feature = "proptest-support")]
 pub mod proptest_support;
-
-pub use nalgebra::{SVector, Vector2, Vector3};
 
 pub use crate::arclen::DEFAULT_ACCURACY;
 pub use crate::bbox::Aabb;
@@ -107,12 +121,13 @@ pub use crate::casteljau::{
 pub use crate::curve::BezierCurve;
 pub use crate::error::CoreError;
 pub use crate::halve::{de_casteljau_halve, de_casteljau_halve_array, de_casteljau_halve_in_place};
-#[cfg(feature = "glam")]
-pub use crate::interop_glam::{from_dvec2, from_dvec3, to_dvec2, to_dvec3};
+#[cfg(feature = "kurbo")]
+pub use crate::interop_kurbo::{bez_path_to_curves, curves_to_bez_path};
 pub use crate::nearest::Nearest;
 pub use crate::reduce::Reduced;
 pub use crate::roots::roots_in_unit_interval;
 pub use crate::surface::BezierSurface;
+pub use crate::vector::{Vector, Vector2, Vector3};
 
 /// The README's example, compiled and run with the doctests.
 #[cfg(doctest)]

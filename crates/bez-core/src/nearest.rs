@@ -1,6 +1,6 @@
 //! Nearest point on a curve.
 
-use nalgebra::SVector;
+use crate::vector::Vector;
 
 use crate::bernstein::bernstein_product;
 use crate::curve::BezierCurve;
@@ -13,7 +13,7 @@ pub struct Nearest<const D: usize> {
     /// Parameter of the nearest point.
     pub t: f64,
     /// The nearest point B(t).
-    pub point: SVector<f64, D>,
+    pub point: Vector<D>,
     /// Its distance to the query point.
     pub distance: f64,
 }
@@ -28,7 +28,7 @@ impl<const D: usize> BezierCurve<D> {
     ///
     /// # Errors
     /// [`CoreError::NonFiniteQuery`] when `p` has a NaN or infinite coordinate.
-    pub fn nearest(&self, p: &SVector<f64, D>) -> Result<Nearest<D>, CoreError> {
+    pub fn nearest(&self, p: &Vector<D>) -> Result<Nearest<D>, CoreError> {
         if !p.iter().all(|x| x.is_finite()) {
             return Err(CoreError::NonFiniteQuery);
         }
@@ -63,7 +63,7 @@ impl<const D: usize> BezierCurve<D> {
     }
 }
 
-fn candidate<const D: usize>(c: &BezierCurve<D>, p: &SVector<f64, D>, t: f64) -> Nearest<D> {
+fn candidate<const D: usize>(c: &BezierCurve<D>, p: &Vector<D>, t: f64) -> Nearest<D> {
     let point = c.eval_unchecked(t);
     Nearest {
         t,
@@ -75,7 +75,7 @@ fn candidate<const D: usize>(c: &BezierCurve<D>, p: &SVector<f64, D>, t: f64) ->
 #[cfg(test)]
 mod tests {
     use super::*;
-    use nalgebra::Vector2;
+    use crate::vector::Vector2;
 
     #[test]
     fn nearest_on_parabola_beats_dense_sampling() {

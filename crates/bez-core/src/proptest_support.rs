@@ -1,6 +1,6 @@
 //! Shared proptest strategies (feature `proptest-support`), for this and dependent crates.
 
-use nalgebra::SVector;
+use crate::vector::Vector;
 use proptest::prelude::*;
 
 use crate::bezier_form::BezierForm;
@@ -10,10 +10,10 @@ use crate::curve::BezierCurve;
 pub fn control_points<const D: usize>(
     degrees: core::ops::RangeInclusive<usize>,
     range: f64,
-) -> impl Strategy<Value = Vec<SVector<f64, D>>> {
+) -> impl Strategy<Value = Vec<Vector<D>>> {
     degrees.prop_flat_map(move |n| {
         proptest::collection::vec(
-            proptest::array::uniform::<_, D>(-range..=range).prop_map(SVector::from),
+            proptest::array::uniform::<_, D>(-range..=range).prop_map(Vector::from),
             n + 1,
         )
     })
@@ -49,11 +49,11 @@ pub fn unit_parameter() -> impl Strategy<Value = f64> {
 /// A message naming the first check that failed and the values compared.
 pub fn check_bezier_form<const D: usize, C: BezierForm<D> + ?Sized>(
     curve: &C,
-    position: impl Fn(f64) -> SVector<f64, D>,
-    velocity: impl Fn(f64) -> SVector<f64, D>,
+    position: impl Fn(f64) -> Vector<D>,
+    velocity: impl Fn(f64) -> Vector<D>,
     tolerance: f64,
 ) -> Result<(), String> {
-    let close = |what: &str, t: f64, got: SVector<f64, D>, want: SVector<f64, D>, tol: f64| {
+    let close = |what: &str, t: f64, got: Vector<D>, want: Vector<D>, tol: f64| {
         let e = (got - want).norm();
         if e <= tol {
             Ok(())
@@ -143,7 +143,7 @@ pub fn check_bezier_form<const D: usize, C: BezierForm<D> + ?Sized>(
     }
 
     let centre = (b.min + b.max) * 0.5;
-    let half = b.size() * 0.75 + SVector::repeat(0.1);
+    let half = b.size() * 0.75 + Vector::repeat(0.1);
     for corner in 0..9_u32 {
         let mut q = centre;
         for d in 0..D {

@@ -5,7 +5,7 @@
     reason = "tests fail loudly on unexpected errors"
 )]
 
-use bez_core::{BezierCurve, SVector, compensated_de_casteljau, de_casteljau};
+use bez_core::{BezierCurve, Vector, compensated_de_casteljau, de_casteljau};
 mod common;
 
 use common::{Q, binom, q};
@@ -75,8 +75,7 @@ fn compensated_evaluation_beats_de_casteljau_near_a_multiple_root() {
     assert!(err_comp * 1e10 < err_plain);
 
     // The curve-level method agrees with the scalar kernel.
-    let curve =
-        BezierCurve::new(coeffs.iter().map(|&c| SVector::<f64, 1>::new(c)).collect()).unwrap();
+    let curve = BezierCurve::new(coeffs.iter().map(|&c| Vector::from([c])).collect()).unwrap();
     assert_eq!(
         curve.eval_compensated(0.75).unwrap()[0],
         compensated_de_casteljau(&coeffs, 0.75)
@@ -87,8 +86,8 @@ fn compensated_evaluation_beats_de_casteljau_near_a_multiple_root() {
 fn subsegment_is_accurate_at_degree_100() {
     // A degree-100 curve with O(1) control points; compare a subsegment's control points with
     // exact rational subdivision.
-    let pts: Vec<SVector<f64, 1>> = (0..=100)
-        .map(|i| SVector::<f64, 1>::new(((i * 7919 % 101) as f64 / 50.0) - 1.0))
+    let pts: Vec<Vector<1>> = (0..=100)
+        .map(|i| Vector::from([((i * 7919 % 101) as f64 / 50.0) - 1.0]))
         .collect();
     let c = BezierCurve::new(pts.clone()).unwrap();
     // Dyadic parameters keep the exact rationals small (and the test fast).

@@ -7,7 +7,7 @@
 )]
 
 use bez_core::{
-    BezierCurve, BezierSurface, SVector, Vector2, bernstein, bernstein_derivative,
+    BezierCurve, BezierSurface, Vector, Vector2, bernstein, bernstein_derivative,
     bernstein_product, bernstein_row, binomial, compensated_de_casteljau, de_casteljau,
     eval_bernstein_poly, roots_in_unit_interval,
 };
@@ -26,7 +26,7 @@ fn wild() -> impl Strategy<Value = f64> {
     ]
 }
 
-fn wild_points() -> impl Strategy<Value = Vec<Vector2<f64>>> {
+fn wild_points() -> impl Strategy<Value = Vec<Vector2>> {
     proptest::collection::vec((wild(), wild()).prop_map(|(x, y)| Vector2::new(x, y)), 0..8)
 }
 
@@ -63,7 +63,7 @@ proptest! {
         raw in proptest::collection::vec(wild(), 0..40),
         du in 0usize..4, dv in 0usize..4, u in wild(), v in wild(),
     ) {
-        let pts: Vec<SVector<f64, 3>> = raw.chunks_exact(3).map(|c| SVector::<f64, 3>::new(c[0], c[1], c[2])).collect();
+        let pts: Vec<Vector<3>> = raw.chunks_exact(3).map(|c| Vector::<3>::new(c[0], c[1], c[2])).collect();
         if let Ok(c) = BezierCurve::new(pts.clone()) {
             let _ = c.torsion(u);
         }

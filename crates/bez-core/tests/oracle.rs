@@ -13,8 +13,8 @@ use common::{Q, binom, q};
 use num_traits::{FromPrimitive, One, ToPrimitive, Zero};
 use proptest::prelude::*;
 
-fn to_q(p: &[Vector2<f64>]) -> Vec<[Q; 2]> {
-    p.iter().map(|v| [q(v.x), q(v.y)]).collect()
+fn to_q(p: &[Vector2]) -> Vec<[Q; 2]> {
+    p.iter().map(|v| [q(v.x()), q(v.y())]).collect()
 }
 
 fn casteljau_levels(p: &[[Q; 2]], t: &Q) -> (Vec<[Q; 2]>, Vec<[Q; 2]>) {
@@ -37,12 +37,12 @@ fn casteljau_levels(p: &[[Q; 2]], t: &Q) -> (Vec<[Q; 2]>, Vec<[Q; 2]>) {
     (left, right_rev)
 }
 
-fn close(ours: &Vector2<f64>, exact: &[Q; 2], scale: f64) -> bool {
+fn close(ours: &Vector2, exact: &[Q; 2], scale: f64) -> bool {
     let ex = [exact[0].to_f64().unwrap(), exact[1].to_f64().unwrap()];
-    (ours.x - ex[0]).abs() <= 1e-12 * scale && (ours.y - ex[1]).abs() <= 1e-12 * scale
+    (ours.x() - ex[0]).abs() <= 1e-12 * scale && (ours.y() - ex[1]).abs() <= 1e-12 * scale
 }
 
-fn scale_of(p: &[Vector2<f64>]) -> f64 {
+fn scale_of(p: &[Vector2]) -> f64 {
     p.iter().map(|v| v.abs().max()).fold(1.0, f64::max)
 }
 

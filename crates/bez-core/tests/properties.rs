@@ -97,6 +97,6 @@ proptest! {
         let p = s.eval(u, v).unwrap();
         prop_assert!((s.curve_at_u(u).unwrap().eval(v).unwrap() - p).norm() <= 1e-12);
         prop_assert!((s.curve_at_v(v).unwrap().eval(u).unwrap() - p).norm() <= 1e-12);
-        let _: Vector3<f64> = p;
+        let _: Vector3 = p;
     }
 }

@@ -12,7 +12,7 @@ pub fn max_second_difference(curve: &BezierCurve<2>) -> f64 {
 }
 
 /// maxᵢ |Pᵢ − 2Pᵢ₊₁ + Pᵢ₊₂| of a control polygon (0 below three points).
-fn second_difference_max(points: &[Vector2<f64>]) -> f64 {
+fn second_difference_max(points: &[Vector2]) -> f64 {
     points
         .windows(3)
         .map(|w| (w[0] - w[1] * 2.0 + w[2]).norm())
@@ -62,7 +62,7 @@ pub fn wang_segment_count(curve: &BezierCurve<2>, tolerance: f64) -> usize {
 
 /// √(n(n − 1) M / (8 tol)) for the control polygon `points` of degree n, unrounded: Wang's
 /// count before the ceiling (0 below degree 2). `tolerance` must be positive.
-pub(crate) fn wang_steps(points: &[Vector2<f64>], tolerance: f64) -> f64 {
+pub(crate) fn wang_steps(points: &[Vector2], tolerance: f64) -> f64 {
     let n = points.len().saturating_sub(1) as f64;
     let m = second_difference_max(points);
     (n * (n - 1.0) * m / (8.0 * tolerance)).sqrt()

@@ -52,7 +52,7 @@ pub fn chord_deviation(curve: &BezierCurve<2>, a: f64, b: f64) -> Result<f64, Su
     let offset: Vec<f64> = piece
         .points()
         .iter()
-        .map(|p| u.x * (p.y - p0.y) - u.y * (p.x - p0.x))
+        .map(|p| u.x() * (p.y() - p0.y()) - u.y() * (p.x() - p0.x()))
         .collect();
     let along: Vec<f64> = piece.points().iter().map(|p| u.dot(&(p - p0))).collect();
     let (dlo, dhi) = bernstein_range(&offset);

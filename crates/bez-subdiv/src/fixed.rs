@@ -28,7 +28,7 @@ pub fn flatten_fixed_into<C: BezierForm<2> + ?Sized>(
     curve: &C,
     tolerance: f64,
     max_depth: usize,
-    polyline: &mut Vec<Vector2<f64>>,
+    polyline: &mut Vec<Vector2>,
 ) -> Result<FlattenStats, SubdivError> {
     fixed_into_bezier(curve.as_bezier(), tolerance, max_depth, polyline)
 }
@@ -38,7 +38,7 @@ fn fixed_into_bezier(
     curve: &BezierCurve<2>,
     tolerance: f64,
     max_depth: usize,
-    polyline: &mut Vec<Vector2<f64>>,
+    polyline: &mut Vec<Vector2>,
 ) -> Result<FlattenStats, SubdivError> {
     validate(curve, tolerance)?;
     polyline.clear();
@@ -80,10 +80,10 @@ fn fixed_into_bezier(
 /// [`SubdivError::DepthLimit`] when a piece is not accepted at level `max_depth`.
 #[inline(always)]
 pub(crate) fn halve_until(
-    points: &[Vector2<f64>],
+    points: &[Vector2],
     max_depth: usize,
-    accept: impl FnMut(&[Vector2<f64>]) -> bool,
-    emit: impl FnMut(&[Vector2<f64>], usize),
+    accept: impl FnMut(&[Vector2]) -> bool,
+    emit: impl FnMut(&[Vector2], usize),
 ) -> Result<usize, SubdivError> {
     match points {
         [a, b] => run_array([*a, *b], max_depth, accept, emit),
@@ -102,10 +102,10 @@ pub(crate) fn halve_until(
 /// loop into one caller.
 #[inline(never)]
 fn run_array<const N: usize>(
-    points: [Vector2<f64>; N],
+    points: [Vector2; N],
     max_depth: usize,
-    accept: impl FnMut(&[Vector2<f64>]) -> bool,
-    emit: impl FnMut(&[Vector2<f64>], usize),
+    accept: impl FnMut(&[Vector2]) -> bool,
+    emit: impl FnMut(&[Vector2], usize),
 ) -> Result<usize, SubdivError> {
     if max_depth <= INLINE_LEVELS {
         let mut pending = InlineStack {
@@ -173,11 +173,11 @@ impl<T> Pending<T> for Vec<T> {
 /// `max_depth` only, so `pending` never holds more than `max_depth` pieces.
 #[inline(always)]
 fn descend<const N: usize>(
-    points: [Vector2<f64>; N],
-    pending: &mut impl Pending<([Vector2<f64>; N], usize)>,
+    points: [Vector2; N],
+    pending: &mut impl Pending<([Vector2; N], usize)>,
     max_depth: usize,
-    mut accept: impl FnMut(&[Vector2<f64>]) -> bool,
-    mut emit: impl FnMut(&[Vector2<f64>], usize),
+    mut accept: impl FnMut(&[Vector2]) -> bool,
+    mut emit: impl FnMut(&[Vector2], usize),
 ) -> Result<usize, SubdivError> {
     let (mut piece, mut level) = (points, 0);
     let mut splits = 0;
@@ -204,7 +204,7 @@ fn descend<const N: usize>(
 /// The pending pieces of a depth-first subdivision with their levels, the next piece on top.
 trait PieceStack {
     /// The control polygon and level of the top piece, `None` when the stack is empty.
-    fn top(&self) -> Option<(&[Vector2<f64>], usize)>;
+    fn top(&self) -> Option<(&[Vector2], usize)>;
     /// Removes the top piece.
     fn pop(&mut self);
     /// Replaces the top piece by its halves one level deeper, the left half on top.
@@ -214,12 +214,12 @@ trait PieceStack {
 /// Pieces of n control points, piece k at `buffer[k n .. (k + 1) n]` and level `depths[k]`.
 struct FlatStack {
     n: usize,
-    buffer: Vec<Vector2<f64>>,
+    buffer: Vec<Vector2>,
     depths: Vec<usize>,
 }
 
 impl FlatStack {
-    fn new(points: &[Vector2<f64>]) -> Self {
+    fn new(points: &[Vector2]) -> Self {
         let mut buffer = Vec::with_capacity(points.len() * 64);
         buffer.extend_from_slice(points);
         let mut depths = Vec::with_capacity(64);
@@ -233,7 +233,7 @@ impl FlatStack {
 }
 
 impl PieceStack for FlatStack {
-    fn top(&self) -> Option<(&[Vector2<f64>], usize)> {
+    fn top(&self) -> Option<(&[Vector2], usize)> {
         let depth = *self.depths.last()?;
         let start = self.buffer.len().saturating_sub(self.n);
         Some((&self.buffer[start..], depth))
@@ -265,8 +265,8 @@ impl PieceStack for FlatStack {
 fn run<S: PieceStack>(
     mut stack: S,
     max_depth: usize,
-    mut accept: impl FnMut(&[Vector2<f64>]) -> bool,
-    mut emit: impl FnMut(&[Vector2<f64>], usize),
+    mut accept: impl FnMut(&[Vector2]) -> bool,
+    mut emit: impl FnMut(&[Vector2], usize),
 ) -> Result<usize, SubdivError> {
     let mut splits = 0;
     while let Some((piece, depth)) = stack.top() {
@@ -292,12 +292,12 @@ mod tests {
     use super::*;
 
     /// Accepted pieces with their levels, and the halving count.
-    type Leaves = Result<(Vec<(Vec<Vector2<f64>>, usize)>, usize), SubdivError>;
+    type Leaves = Result<(Vec<(Vec<Vector2>, usize)>, usize), SubdivError>;
 
     /// The array loop with pending pieces in `pending`.
     fn array_leaves(
-        points: [Vector2<f64>; 4],
-        pending: &mut impl Pending<([Vector2<f64>; 4], usize)>,
+        points: [Vector2; 4],
+        pending: &mut impl Pending<([Vector2; 4], usize)>,
         limit: f64,
         depth: usize,
     ) -> Leaves {
@@ -313,7 +313,7 @@ mod tests {
     }
 
     /// An empty array stack of `C` cubic pieces.
-    fn empty<const C: usize>() -> InlineStack<([Vector2<f64>; 4], usize), C> {
+    fn empty<const C: usize>() -> InlineStack<([Vector2; 4], usize), C> {
         InlineStack {
             items: [([Vector2::zeros(); 4], 0); C],
             len: 0,
@@ -321,7 +321,7 @@ mod tests {
     }
 
     /// The slice loop on the flat buffer.
-    fn flat_leaves(points: [Vector2<f64>; 4], limit: f64, depth: usize) -> Leaves {
+    fn flat_leaves(points: [Vector2; 4], limit: f64, depth: usize) -> Leaves {
         let mut leaves = Vec::new();
         let splits = run(
             FlatStack::new(&points),

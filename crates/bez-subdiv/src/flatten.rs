@@ -44,7 +44,7 @@ pub struct Piece {
     /// End parameter on the original curve.
     pub t1: f64,
     /// Control points of the piece (the curve restricted to [t0, t1]).
-    pub points: Vec<Vector2<f64>>,
+    pub points: Vec<Vector2>,
 }
 
 /// Counts of one flattening run (what the running time is proportional to).
@@ -69,7 +69,7 @@ pub struct FlattenStats {
 #[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 pub struct Flattening {
     /// The control polygons of the final pieces in order, joints not repeated.
-    pub polyline: Vec<Vector2<f64>>,
+    pub polyline: Vec<Vector2>,
     /// The final pieces in parameter order.
     pub pieces: Vec<Piece>,
     /// Counts.
@@ -104,7 +104,7 @@ fn now() -> Option<Instant> {
 pub fn curve_size(curve: &BezierCurve<2>) -> f64 {
     let b = curve.control_bounding_box();
     let s = b.size();
-    s.x.max(s.y)
+    s.x().max(s.y())
 }
 
 /// The input checks of every eq. (3) flattening: ε positive and finite, at least two points.

@@ -12,12 +12,12 @@ pub struct FlatPoint {
     /// Parameter on the curve.
     pub t: f64,
     /// B(t).
-    pub point: Vector2<f64>,
+    pub point: Vector2,
 }
 
 /// Distance of `p` to the segment [a, b].
 #[must_use]
-pub fn distance_to_segment(p: &Vector2<f64>, a: &Vector2<f64>, b: &Vector2<f64>) -> f64 {
+pub fn distance_to_segment(p: &Vector2, a: &Vector2, b: &Vector2) -> f64 {
     let d = b - a;
     let len2 = d.norm_squared();
     if len2 == 0.0 {
@@ -33,7 +33,7 @@ pub fn distance_to_segment(p: &Vector2<f64>, a: &Vector2<f64>, b: &Vector2<f64>)
 /// Compared in squared distances, with one division per piece (the projection parameter
 /// s = (Pᵢ − P₀)·d / |d|², d = Pₙ − P₀, clamped to [0, 1]); [`distance_to_segment`] decides when
 /// tolerance² or |d|² is not a normal number.
-fn within_chord_segment(piece: &[Vector2<f64>], tolerance: f64) -> bool {
+fn within_chord_segment(piece: &[Vector2], tolerance: f64) -> bool {
     let [a, interior @ .., b] = piece else {
         return true;
     };
@@ -95,8 +95,8 @@ pub(crate) fn halve_to_points(
     curve: &BezierCurve<2>,
     tolerance: f64,
     max_depth: usize,
-    accept: impl FnMut(&[Vector2<f64>]) -> bool,
-    mut interior: impl FnMut(&[Vector2<f64>], f64, f64, &mut Vec<FlatPoint>),
+    accept: impl FnMut(&[Vector2]) -> bool,
+    mut interior: impl FnMut(&[Vector2], f64, f64, &mut Vec<FlatPoint>),
 ) -> Result<Vec<FlatPoint>, SubdivError> {
     if !(tolerance.is_finite() && tolerance > 0.0) {
         return Err(SubdivError::InvalidTolerance { value: tolerance });

@@ -53,7 +53,7 @@ impl Default for HausdorffSampling {
 /// ```
 pub fn measured_hausdorff<C: BezierForm<2> + ?Sized>(
     curve: &C,
-    polyline: &[Vector2<f64>],
+    polyline: &[Vector2],
     sampling: HausdorffSampling,
 ) -> Result<f64, SubdivError> {
     hausdorff_bezier(curve.as_bezier(), polyline, sampling)
@@ -62,13 +62,13 @@ pub fn measured_hausdorff<C: BezierForm<2> + ?Sized>(
 /// [`measured_hausdorff`] on the Bézier form (one instance for every curve type).
 fn hausdorff_bezier(
     curve: &BezierCurve<2>,
-    polyline: &[Vector2<f64>],
+    polyline: &[Vector2],
     sampling: HausdorffSampling,
 ) -> Result<f64, SubdivError> {
     let Some(&first) = polyline.first() else {
         return Err(SubdivError::TooFewPoints { got: 0 });
     };
-    let to_polyline = |p: &Vector2<f64>| {
+    let to_polyline = |p: &Vector2| {
         if polyline.len() == 1 {
             return (p - first).norm();
         }

@@ -7,14 +7,14 @@ use bez_core::Vector2;
 ///
 /// The fallback makes pieces whose ends coincide (closed loops) measurable: NOTES decision.
 #[must_use]
-pub fn distance_to_chord_line(p: &Vector2<f64>, a: &Vector2<f64>, b: &Vector2<f64>) -> f64 {
+pub fn distance_to_chord_line(p: &Vector2, a: &Vector2, b: &Vector2) -> f64 {
     let d = b - a;
     let len = d.norm();
     let w = p - a;
     if len == 0.0 {
         w.norm()
     } else {
-        (d.x * w.y - d.y * w.x).abs() / len
+        (d.x() * w.y() - d.y() * w.x()).abs() / len
     }
 }
 
@@ -23,7 +23,7 @@ pub fn distance_to_chord_line(p: &Vector2<f64>, a: &Vector2<f64>, b: &Vector2<f6
 ///
 /// Zero for fewer than three points.
 #[must_use]
-pub fn flatness(points: &[Vector2<f64>]) -> f64 {
+pub fn flatness(points: &[Vector2]) -> f64 {
     match points {
         [a, interior @ .., b] => interior
             .iter()
@@ -40,7 +40,7 @@ pub fn flatness(points: &[Vector2<f64>]) -> f64 {
 /// compared first and divided once by |PₙP₀| (rounding is monotone, so the largest quotient is
 /// the quotient of the largest numerator); one square root per polygon instead of one per point.
 #[must_use]
-pub fn max_chord_distance(points: &[Vector2<f64>]) -> f64 {
+pub fn max_chord_distance(points: &[Vector2]) -> f64 {
     let [a, interior @ .., b] = points else {
         return 0.0;
     };
@@ -58,12 +58,12 @@ pub fn max_chord_distance(points: &[Vector2<f64>]) -> f64 {
 /// c = maxᵢ |d × (Pᵢ − a)| over `interior`: |d| times the largest distance to the line through
 /// `a` with direction `d` (0 for no points).
 #[inline]
-fn max_cross(a: &Vector2<f64>, d: &Vector2<f64>, interior: &[Vector2<f64>]) -> f64 {
+fn max_cross(a: &Vector2, d: &Vector2, interior: &[Vector2]) -> f64 {
     interior
         .iter()
         .map(|p| {
             let w = p - a;
-            (d.x * w.y - d.y * w.x).abs()
+            (d.x() * w.y() - d.y() * w.x()).abs()
         })
         .fold(0.0, f64::max)
 }
@@ -80,7 +80,7 @@ const SQUARED_TEST_MARGIN: f64 = 1e-9;
 /// [`SQUARED_TEST_MARGIN`] (relative) and limit² l² is a normal number; otherwise the quotient of
 /// [`max_chord_distance`] decides.
 #[inline]
-pub(crate) fn within_chord_line(points: &[Vector2<f64>], limit: f64) -> bool {
+pub(crate) fn within_chord_line(points: &[Vector2], limit: f64) -> bool {
     if let [a, interior @ .., b] = points {
         let d = b - a;
         let len2 = d.norm_squared();
@@ -105,19 +105,19 @@ pub(crate) fn within_chord_line(points: &[Vector2<f64>], limit: f64) -> bool {
 ///
 /// O(n log n). Zero for fewer than three points or collinear points.
 #[must_use]
-pub fn hull_area(points: &[Vector2<f64>]) -> f64 {
+pub fn hull_area(points: &[Vector2]) -> f64 {
     if points.len() < 3 {
         return 0.0;
     }
-    let mut pts: Vec<Vector2<f64>> = points.to_vec();
-    pts.sort_by(|a, b| a.x.total_cmp(&b.x).then(a.y.total_cmp(&b.y)));
-    let cross = |o: &Vector2<f64>, a: &Vector2<f64>, b: &Vector2<f64>| {
-        (a.x - o.x) * (b.y - o.y) - (a.y - o.y) * (b.x - o.x)
+    let mut pts: Vec<Vector2> = points.to_vec();
+    pts.sort_by(|a, b| a.x().total_cmp(&b.x()).then(a.y().total_cmp(&b.y())));
+    let cross = |o: &Vector2, a: &Vector2, b: &Vector2| {
+        (a.x() - o.x()) * (b.y() - o.y()) - (a.y() - o.y()) * (b.x() - o.x())
     };
-    let mut hull: Vec<Vector2<f64>> = Vec::with_capacity(2 * pts.len());
+    let mut hull: Vec<Vector2> = Vec::with_capacity(2 * pts.len());
     for pass in 0..2 {
         let start = hull.len();
-        let iter: Box<dyn Iterator<Item = &Vector2<f64>>> = if pass == 0 {
+        let iter: Box<dyn Iterator<Item = &Vector2>> = if pass == 0 {
             Box::new(pts.iter())
         } else {
             Box::new(pts.iter().rev())
@@ -137,7 +137,7 @@ pub fn hull_area(points: &[Vector2<f64>]) -> f64 {
     let twice: f64 = (0..n)
         .map(|i| {
             let (a, b) = (hull[i], hull[(i + 1) % n]);
-            a.x * b.y - a.y * b.x
+            a.x() * b.y() - a.y() * b.x()
         })
         .sum();
     0.5 * twice.abs()
@@ -149,7 +149,7 @@ mod tests {
 
     use super::*;
 
-    fn v(x: f64, y: f64) -> Vector2<f64> {
+    fn v(x: f64, y: f64) -> Vector2 {
         Vector2::new(x, y)
     }
 
@@ -167,7 +167,7 @@ mod tests {
         assert_eq!(hull_area(&[v(0.0, 0.0), v(1.0, 1.0), v(2.0, 2.0)]), 0.0);
     }
 
-    fn polygon() -> impl Strategy<Value = Vec<Vector2<f64>>> {
+    fn polygon() -> impl Strategy<Value = Vec<Vector2>> {
         proptest::collection::vec((-10.0..10.0f64, -10.0..10.0f64), 2..8)
             .prop_map(|p| p.into_iter().map(|(x, y)| v(x, y)).collect())
     }

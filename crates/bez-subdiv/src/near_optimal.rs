@@ -43,7 +43,7 @@ fn density_integral(
                 .unwrap_or_else(|_| vec![Vector2::zeros(); 3]);
             let speed = d[1].norm();
             // √|κ| · speed = √(|x'×x''| / speed), finite even where the speed vanishes.
-            let cross = (d[1].x * d[2].y - d[1].y * d[2].x).abs();
+            let cross = (d[1].x() * d[2].y() - d[1].y() * d[2].x()).abs();
             if speed > 0.0 {
                 (cross / speed).sqrt() / (8.0 * tolerance).sqrt()
             } else {

@@ -120,7 +120,7 @@ impl SplitRule {
     /// [`SubdivError::Optimizer`] if Brent's method fails.
     pub fn choose(
         &self,
-        points: &[Vector2<f64>],
+        points: &[Vector2],
         depth: usize,
         searching: bool,
     ) -> Result<Choice, SubdivError> {
@@ -183,7 +183,7 @@ pub struct Choice {
 ///
 /// Cost O(n²) for the split plus O(n) (flatness) or O(n log n) (hull area).
 #[must_use]
-pub fn split_objective(objective: Objective, points: &[Vector2<f64>], t: f64) -> f64 {
+pub fn split_objective(objective: Objective, points: &[Vector2], t: f64) -> f64 {
     let n = points.len();
     let mut left = vec![Vector2::zeros(); n];
     let mut right = vec![Vector2::zeros(); n];

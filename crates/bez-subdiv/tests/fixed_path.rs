@@ -15,7 +15,7 @@ fn fast(
     c: &BezierCurve<2>,
     tolerance: f64,
     max_depth: usize,
-) -> Result<(Vec<Vector2<f64>>, bez_subdiv::FlattenStats), SubdivError> {
+) -> Result<(Vec<Vector2>, bez_subdiv::FlattenStats), SubdivError> {
     // A dirty, reused buffer: the function must clear it.
     let mut polyline = vec![Vector2::new(9.0, 9.0); 3];
     let stats = flatten_fixed_into(c, tolerance, max_depth, &mut polyline)?;
@@ -26,7 +26,7 @@ fn general(
     c: &BezierCurve<2>,
     tolerance: f64,
     max_depth: usize,
-) -> Result<(Vec<Vector2<f64>>, bez_subdiv::FlattenStats), SubdivError> {
+) -> Result<(Vec<Vector2>, bez_subdiv::FlattenStats), SubdivError> {
     let options = FlattenOptions {
         tolerance,
         rule: SplitRule::Fixed,

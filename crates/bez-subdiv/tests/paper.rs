@@ -67,8 +67,8 @@ proptest! {
     ) {
         // Mirror the left half of the control polygon about the y axis.
         let mut pts: Vec<_> = half.iter().enumerate().map(|(i, &(x, y))| Vector2::new(-(i as f64) - 1.0 - x, y)).collect();
-        pts.sort_by(|a, b| a.x.total_cmp(&b.x));
-        let mirror: Vec<_> = pts.iter().rev().map(|p| Vector2::new(-p.x, p.y)).collect();
+        pts.sort_by(|a, b| a.x().total_cmp(&b.x()));
+        let mirror: Vec<_> = pts.iter().rev().map(|p| Vector2::new(-p.x(), p.y())).collect();
         pts.extend(mirror);
         for o in [Objective::Flatness, Objective::HullArea] {
             let a = split_objective(o, &pts, 0.5 - h);

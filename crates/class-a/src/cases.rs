@@ -34,7 +34,7 @@ fn random_scale_angle(rng: &mut ChaCha8Rng, theta_max: f64) -> (f64, f64) {
 /// n ∈ [3, 12], total turn < π, first leg random: α₀ = b₀, α₁ = b₁, α₂ = bₙ... with α₁ on the
 /// intersection of the end tangents (b₀b₁ and bₙ₋₁bₙ extended). Seeded by `seed`.
 #[must_use]
-pub fn random_planar_inputs(count: usize, seed: u64) -> Vec<([Vector2<f64>; 3], usize)> {
+pub fn random_planar_inputs(count: usize, seed: u64) -> Vec<([Vector2; 3], usize)> {
     let mut rng = ChaCha8Rng::seed_from_u64(seed);
     let mut out = Vec::with_capacity(count);
     while out.len() < count {
@@ -48,17 +48,17 @@ pub fn random_planar_inputs(count: usize, seed: u64) -> Vec<([Vector2<f64>; 3], 
         let mut p = b0;
         for _ in 0..n - 1 {
             p += leg;
-            leg = m * leg;
+            leg = (m * nalgebra::Vector2::<f64>::from(leg)).into();
         }
         let d_last = leg;
         let bn = p + leg;
         // α₁ = b₀ + a d₀ = bₙ − c d_last: solve the 2×2 system.
-        let det = d0.x * (-d_last.y) - d0.y * (-d_last.x);
+        let det = d0.x() * (-d_last.y()) - d0.y() * (-d_last.x());
         if det.abs() < 1e-9 {
             continue;
         }
         let r = bn - b0;
-        let a = (r.x * (-d_last.y) - r.y * (-d_last.x)) / det;
+        let a = (r.x() * (-d_last.y()) - r.y() * (-d_last.x())) / det;
         if !(a > 0.0 && a.is_finite()) {
             continue;
         }
@@ -70,7 +70,7 @@ pub fn random_planar_inputs(count: usize, seed: u64) -> Vec<([Vector2<f64>; 3], 
 /// `count` feasible spatial inputs (α₀..α₃, n) from random typical spatial curves with
 /// s ∈ [1, 1.6], s cos θ ≥ 1.001, random axis, n ∈ [3, 10]: α₀ = b₀, α₁ = b₁, α₂ = bₙ₋₁, α₃ = bₙ.
 #[must_use]
-pub fn random_spatial_inputs(count: usize, seed: u64) -> Vec<([Vector3<f64>; 4], usize)> {
+pub fn random_spatial_inputs(count: usize, seed: u64) -> Vec<([Vector3; 4], usize)> {
     let mut rng = ChaCha8Rng::seed_from_u64(seed);
     let mut out = Vec::with_capacity(count);
     while out.len() < count {
@@ -93,14 +93,14 @@ pub fn random_spatial_inputs(count: usize, seed: u64) -> Vec<([Vector3<f64>; 4],
         for _ in 0..n {
             p += leg;
             pts.push(p);
-            leg = m * leg;
+            leg = (m * nalgebra::Vector3::<f64>::from(leg)).into();
         }
         out.push(([pts[0], pts[1], pts[n - 1], pts[n]], n));
     }
     out
 }
 
-fn random_unit(rng: &mut ChaCha8Rng) -> Vector3<f64> {
+fn random_unit(rng: &mut ChaCha8Rng) -> Vector3 {
     loop {
         let v = Vector3::new(
             rng.random_range(-1.0..1.0),
@@ -123,13 +123,13 @@ pub fn fig5_matrix() -> Matrix3<f64> {
 /// Fig. 5 start vector: the printed V = [−1, 1] is 2-D; we use (−1, 1, 1), which has a
 /// component along the third axis and gives a genuinely spatial curve (NOTES).
 #[must_use]
-pub fn fig5_start() -> Vector3<f64> {
+pub fn fig5_start() -> Vector3 {
     Vector3::new(-1.0, 1.0, 1.0)
 }
 
 /// Fig. 6 points (degree 49): the paper's coordinates are not printed; a documented triangle.
 #[must_use]
-pub fn fig6_points() -> [Vector2<f64>; 3] {
+pub fn fig6_points() -> [Vector2; 3] {
     [
         Vector2::new(0.0, 0.0),
         Vector2::new(6.0, 0.0),
@@ -139,7 +139,7 @@ pub fn fig6_points() -> [Vector2<f64>; 3] {
 
 /// Fig. 7 points (degree 9, δ₀..δ₃ = 0.1).
 #[must_use]
-pub fn fig7_points() -> [Vector2<f64>; 3] {
+pub fn fig7_points() -> [Vector2; 3] {
     [
         Vector2::new(0.0, 0.0),
         Vector2::new(4.0, 0.0),
@@ -150,7 +150,7 @@ pub fn fig7_points() -> [Vector2<f64>; 3] {
 /// Fig. 8 points (degree 7): b₀, b₁, b₆, b₇ of the typical curve with s = 1.2, θ = 0.3,
 /// axis ∝ (0.3, 0.2, 1), Δb₀ = (1, 0, 0.2), rounded to 0.01 (the paper prints no coordinates).
 #[must_use]
-pub fn fig8_points() -> [Vector3<f64>; 4] {
+pub fn fig8_points() -> [Vector3; 4] {
     [
         Vector3::new(0.0, 0.0, 0.0),
         Vector3::new(1.0, 0.0, 0.2),
@@ -162,7 +162,7 @@ pub fn fig8_points() -> [Vector3<f64>; 4] {
 /// Fig. 9 points (degree 4, δ = (0, 0.15, 0, 0.5)): b₀, b₁, b₃, b₄ of the typical curve with
 /// s = 1.3, θ = 0.35, axis ∝ (0.1, −0.3, 1), Δb₀ = (1, 0.1, 0.3), rounded to 0.01.
 #[must_use]
-pub fn fig9_points() -> [Vector3<f64>; 4] {
+pub fn fig9_points() -> [Vector3; 4] {
     [
         Vector3::new(0.0, 0.0, 0.0),
         Vector3::new(1.0, 0.1, 0.3),
@@ -237,10 +237,7 @@ pub fn fig9_general() -> Result<(TypicalSpatial, BezierCurve<3>), ClassAError> {
 
 /// Relative end-point error |bₙ − α_last| / |α_last − α₀| of a curve built for the points `a`.
 #[must_use]
-pub fn endpoint_error<const D: usize>(
-    a: &[bez_core::SVector<f64, D>],
-    curve: &BezierCurve<D>,
-) -> f64 {
+pub fn endpoint_error<const D: usize>(a: &[bez_core::Vector<D>], curve: &BezierCurve<D>) -> f64 {
     match (a.first(), a.last()) {
         (Some(first), Some(last)) => (curve.end() - last).norm() / (last - first).norm(),
         _ => f64::INFINITY,
@@ -259,7 +256,7 @@ pub struct CounterexampleSearch {
     /// Of those, how many also meet condition (4) for the sub-curve matrices (sampled).
     pub not_monotone_with_subcurve_4: usize,
     /// The first counterexample found: (M, Δb₀, degree, parameter of the extremum).
-    pub first: Option<(Matrix2<f64>, Vector2<f64>, usize, f64)>,
+    pub first: Option<(Matrix2<f64>, Vector2, usize, f64)>,
 }
 
 /// Random search for Cao & Wang's phenomenon: 2×2 matrices with entries a₁₁, a₂₂ ∈ [0.5, 3),

@@ -1,7 +1,7 @@
 //! Control points of a Class A curve from its first leg and its matrix (eqs. (2), (8)), and
 //! the curve value [`ClassACurve`].
 
-use bez_core::{BezierCurve, BezierForm, SVector};
+use bez_core::{BezierCurve, BezierForm, Vector};
 use nalgebra::SMatrix;
 
 use crate::{ClassAError, TypicalPlanar, TypicalSpatial};
@@ -13,8 +13,8 @@ use crate::{ClassAError, TypicalPlanar, TypicalSpatial};
 /// [`ClassAError::DegreeTooLow`] for n = 0, [`ClassAError::NonFinite`] for a non-finite input,
 /// [`ClassAError::Core`] if the points overflow.
 pub fn class_a_curve<const D: usize>(
-    b0: &SVector<f64, D>,
-    delta_b0: &SVector<f64, D>,
+    b0: &Vector<D>,
+    delta_b0: &Vector<D>,
     m: &SMatrix<f64, D, D>,
     degree: usize,
 ) -> Result<BezierCurve<D>, ClassAError> {
@@ -37,7 +37,7 @@ pub fn class_a_curve<const D: usize>(
     for _ in 0..degree {
         p += leg;
         points.push(p);
-        leg = m * leg;
+        leg = (m * nalgebra::SVector::<f64, D>::from(leg)).into();
     }
     Ok(BezierCurve::new(points)?)
 }
@@ -81,8 +81,8 @@ impl<const D: usize> ClassACurve<D> {
     /// # Errors
     /// As [`class_a_curve`].
     pub fn new(
-        b0: &SVector<f64, D>,
-        delta_b0: &SVector<f64, D>,
+        b0: &Vector<D>,
+        delta_b0: &Vector<D>,
         m: &SMatrix<f64, D, D>,
         degree: usize,
     ) -> Result<Self, ClassAError> {

@@ -5,7 +5,7 @@
 //! degree, a tight turn near the end point), the end tangent bₙ − bₙ₋₁ of the representable
 //! curve is off by up to about ε|bₙ| / |Δbₙ₋₁|. This module measures the achieved errors.
 
-use bez_core::SVector;
+use bez_core::Vector;
 
 use crate::ClassAError;
 
@@ -33,7 +33,7 @@ pub struct Interpolation {
 
 /// Angle between two non-zero vectors, 2·asin(|û − v̂|/2), plus the evaluation allowance;
 /// π + allowance if either is zero or not finite (no direction).
-fn angle_bound<const D: usize>(u: &SVector<f64, D>, v: &SVector<f64, D>) -> f64 {
+fn angle_bound<const D: usize>(u: &Vector<D>, v: &Vector<D>) -> f64 {
     let (nu, nv) = (u.norm(), v.norm());
     if !(nu > 0.0 && nv > 0.0 && nu.is_finite() && nv.is_finite()) {
         return std::f64::consts::PI + ANGLE_EVALUATION_ALLOWANCE;
@@ -47,11 +47,11 @@ impl Interpolation {
     /// `start_tangent`, the end tangent direction `end_tangent` and α_last.
     #[must_use]
     pub fn measure<const D: usize>(
-        points: &[SVector<f64, D>],
-        first: &SVector<f64, D>,
-        start_tangent: &SVector<f64, D>,
-        end_tangent: &SVector<f64, D>,
-        last: &SVector<f64, D>,
+        points: &[Vector<D>],
+        first: &Vector<D>,
+        start_tangent: &Vector<D>,
+        end_tangent: &Vector<D>,
+        last: &Vector<D>,
     ) -> Self {
         let scale = (last - first).norm();
         let n = points.len().saturating_sub(1);

@@ -13,9 +13,9 @@ use crate::{ClassAError, Interpolation, class_a_curve};
 #[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 pub struct TypicalPlanar {
     /// First control point b₀ = α₀.
-    pub b0: Vector2<f64>,
+    pub b0: Vector2,
     /// Unit start tangent μ.
-    pub mu: Vector2<f64>,
+    pub mu: Vector2,
     /// Length L = |Δb₀| (the paper's second meaning of "b₀").
     pub length: f64,
     /// Scale s of M.
@@ -27,8 +27,8 @@ pub struct TypicalPlanar {
 }
 
 /// Signed angle from a to b in (−π, π].
-pub(crate) fn signed_angle(a: &Vector2<f64>, b: &Vector2<f64>) -> f64 {
-    (a.x * b.y - a.y * b.x).atan2(a.dot(b))
+pub(crate) fn signed_angle(a: &Vector2, b: &Vector2) -> f64 {
+    (a.x() * b.y() - a.y() * b.x()).atan2(a.dot(b))
 }
 
 /// The geometry of three interactive points: ψ (tangent turn), δ (chord angle), |chord|.
@@ -36,7 +36,7 @@ pub(crate) fn signed_angle(a: &Vector2<f64>, b: &Vector2<f64>) -> f64 {
 #[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 pub struct PlanarGeometry {
     /// Unit start tangent μ = (α₁ − α₀)/|α₁ − α₀|.
-    pub mu: Vector2<f64>,
+    pub mu: Vector2,
     /// Signed turn ψ from α₁ − α₀ to α₂ − α₁.
     pub turn: f64,
     /// Signed angle δ of α₂ − α₀ measured from α₁ − α₀.
@@ -52,13 +52,9 @@ impl PlanarGeometry {
     /// [`ClassAError::NonFinite`], [`ClassAError::CoincidentPoints`],
     /// [`ClassAError::DegenerateTurn`] (collinear, or a turn of π),
     /// [`ClassAError::ChordOutsideTangents`] (δ not strictly between 0 and ψ).
-    pub fn new(
-        a0: &Vector2<f64>,
-        a1: &Vector2<f64>,
-        a2: &Vector2<f64>,
-    ) -> Result<Self, ClassAError> {
+    pub fn new(a0: &Vector2, a1: &Vector2, a2: &Vector2) -> Result<Self, ClassAError> {
         for (p, name) in [(a0, "alpha0"), (a1, "alpha1"), (a2, "alpha2")] {
-            if !(p.x.is_finite() && p.y.is_finite()) {
+            if !(p.x().is_finite() && p.y().is_finite()) {
                 return Err(ClassAError::NonFinite { name });
             }
         }
@@ -186,9 +182,9 @@ fn chord_angle_of(s: f64, theta: f64, n: usize) -> f64 {
 /// # Errors
 /// As [`PlanarGeometry::new`], and [`ClassAError::DegreeTooLow`] for n < 2.
 pub fn planar_feasibility(
-    a0: &Vector2<f64>,
-    a1: &Vector2<f64>,
-    a2: &Vector2<f64>,
+    a0: &Vector2,
+    a1: &Vector2,
+    a2: &Vector2,
     degree: usize,
 ) -> Result<PlanarFeasibility, ClassAError> {
     if degree < 2 {
@@ -224,9 +220,9 @@ impl TypicalPlanar {
     /// As [`planar_feasibility`], and [`ClassAError::NotClassA`] when s violates condition (4)
     /// (cos θ < s < 1/cos θ; an isosceles triangle gives s = 1).
     pub fn from_points(
-        a0: &Vector2<f64>,
-        a1: &Vector2<f64>,
-        a2: &Vector2<f64>,
+        a0: &Vector2,
+        a1: &Vector2,
+        a2: &Vector2,
         degree: usize,
     ) -> Result<Self, ClassAError> {
         let f = planar_feasibility(a0, a1, a2, degree)?;
@@ -243,9 +239,9 @@ impl TypicalPlanar {
     }
 
     fn from_points_unchecked(
-        a0: &Vector2<f64>,
-        a1: &Vector2<f64>,
-        a2: &Vector2<f64>,
+        a0: &Vector2,
+        a1: &Vector2,
+        a2: &Vector2,
         degree: usize,
         s: f64,
         theta: f64,
@@ -276,9 +272,9 @@ impl TypicalPlanar {
     /// conditions (typically the end tangent when s ≪ 1 at high degree, where the last leg
     /// L·sⁿ⁻¹ is below the rounding of bₙ).
     pub fn generate(
-        a0: &Vector2<f64>,
-        a1: &Vector2<f64>,
-        a2: &Vector2<f64>,
+        a0: &Vector2,
+        a1: &Vector2,
+        a2: &Vector2,
         degree: usize,
         tolerance: f64,
     ) -> Result<(Self, BezierCurve<2>, Interpolation), ClassAError> {
@@ -309,7 +305,7 @@ impl TypicalPlanar {
     }
 
     /// Control points written in place (no allocation beyond `out`), for interactive updates.
-    pub fn control_points_into(&self, out: &mut Vec<Vector2<f64>>) {
+    pub fn control_points_into(&self, out: &mut Vec<Vector2>) {
         out.clear();
         let (sn, c) = self.theta.sin_cos();
         let (zr, zi) = (self.s * c, self.s * sn);
@@ -319,7 +315,7 @@ impl TypicalPlanar {
         for _ in 0..self.degree {
             p += leg;
             out.push(p);
-            leg = Vector2::new(zr * leg.x - zi * leg.y, zi * leg.x + zr * leg.y);
+            leg = Vector2::new(zr * leg.x() - zi * leg.y(), zi * leg.x() + zr * leg.y());
         }
     }
 
@@ -383,9 +379,9 @@ fn geometric_sum(s: f64, theta: f64, n: usize) -> Complex<f64> {
 /// As [`planar_feasibility`], [`ClassAError::Optimizer`] if argmin fails,
 /// [`ClassAError::NoConvergence`] for a non-positive L or s.
 pub fn planar_nelder_mead(
-    a0: &Vector2<f64>,
-    a1: &Vector2<f64>,
-    a2: &Vector2<f64>,
+    a0: &Vector2,
+    a1: &Vector2,
+    a2: &Vector2,
     degree: usize,
     max_iters: u64,
 ) -> Result<(TypicalPlanar, f64), ClassAError> {

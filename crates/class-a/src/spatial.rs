@@ -10,9 +10,9 @@ use crate::{ClassAError, Interpolation, class_a_curve};
 #[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 pub struct TypicalSpatial {
     /// b₀ = α₀.
-    pub b0: Vector3<f64>,
+    pub b0: Vector3,
     /// Unit start tangent v₀.
-    pub v0: Vector3<f64>,
+    pub v0: Vector3,
     /// L = |Δb₀|.
     pub length: f64,
     /// Scale s.
@@ -20,7 +20,7 @@ pub struct TypicalSpatial {
     /// Axis angle φ of eq. (14).
     pub phi: f64,
     /// Unit rotation axis u.
-    pub axis: Vector3<f64>,
+    pub axis: Vector3,
     /// Rotation angle per leg θ = ψ/(n − 1).
     pub theta: f64,
     /// Degree n.
@@ -31,20 +31,20 @@ pub struct TypicalSpatial {
 /// R = I + sin θ K + (1 − cos θ)K², with K v = u × v (K the cross-product matrix of u). The printed eq. (12) is the
 /// transpose of K (it rotates by −θ); we use the usual convention and test v₁ = Rⁿ⁻¹v₀.
 #[must_use]
-pub fn rotation(axis: &Vector3<f64>, theta: f64) -> Matrix3<f64> {
-    let k = axis.cross_matrix();
+pub fn rotation(axis: &Vector3, theta: f64) -> Matrix3<f64> {
+    let k = nalgebra::Vector3::<f64>::from(*axis).cross_matrix();
     Matrix3::identity() + k * theta.sin() + k * k * (1.0 - theta.cos())
 }
 
 /// Eq. (14), corrected: u = (v₀×v₁)/|v₀×v₁| cos φ + (v₀+v₁)/|v₀+v₁| sin φ.
-fn axis_of(v0: &Vector3<f64>, v1: &Vector3<f64>, phi: f64) -> Vector3<f64> {
+fn axis_of(v0: &Vector3, v1: &Vector3, phi: f64) -> Vector3 {
     let c = v0.cross(v1);
     let b = v0 + v1;
     c / c.norm() * phi.cos() + b / b.norm() * phi.sin()
 }
 
 /// Angle ψ about u from the projection of v₀ to that of v₁, in (−π, π].
-fn turn_about(u: &Vector3<f64>, v0: &Vector3<f64>, v1: &Vector3<f64>) -> f64 {
+fn turn_about(u: &Vector3, v0: &Vector3, v1: &Vector3) -> f64 {
     let p0 = v0 - u * u.dot(v0);
     let p1 = v1 - u * u.dot(v1);
     u.dot(&p0.cross(&p1)).atan2(p0.dot(&p1))
@@ -53,14 +53,14 @@ fn turn_about(u: &Vector3<f64>, v0: &Vector3<f64>, v1: &Vector3<f64>) -> f64 {
 /// The validated input of the spatial problem.
 #[derive(Debug, Clone, Copy)]
 struct Setup {
-    v0: Vector3<f64>,
-    v1: Vector3<f64>,
-    chord: Vector3<f64>,
+    v0: Vector3,
+    v1: Vector3,
+    chord: Vector3,
     n: usize,
 }
 
 impl Setup {
-    fn new(a: &[Vector3<f64>; 4], degree: usize) -> Result<Self, ClassAError> {
+    fn new(a: &[Vector3; 4], degree: usize) -> Result<Self, ClassAError> {
         if degree < 2 {
             return Err(ClassAError::DegreeTooLow { degree, needed: 2 });
         }
@@ -87,7 +87,7 @@ impl Setup {
     }
 
     /// (u, θ, Σ_{j<n} sʲRʲv₀) for (φ, s).
-    fn sum(&self, phi: f64, s: f64) -> (Vector3<f64>, f64, Vector3<f64>) {
+    fn sum(&self, phi: f64, s: f64) -> (Vector3, f64, Vector3) {
         let u = axis_of(&self.v0, &self.v1, phi);
         let theta = turn_about(&u, &self.v0, &self.v1) / (self.n - 1) as f64;
         let m = rotation(&u, theta) * s;
@@ -95,13 +95,13 @@ impl Setup {
         let mut sum = Vector3::zeros();
         for _ in 0..self.n {
             sum += leg;
-            leg = m * leg;
+            leg = (m * nalgebra::Vector3::<f64>::from(leg)).into();
         }
         (u, theta, sum)
     }
 
     /// Residual: unit(Σ) − unit(chord), a 3-vector (2 independent components).
-    fn residual(&self, phi: f64, log_s: f64) -> Vector3<f64> {
+    fn residual(&self, phi: f64, log_s: f64) -> Vector3 {
         let (_, _, sum) = self.sum(phi, log_s.exp());
         let c = self.chord / self.chord.norm();
         let n = sum.norm();
@@ -112,7 +112,7 @@ impl Setup {
         }
     }
 
-    fn finish(&self, a0: &Vector3<f64>, phi: f64, s: f64) -> Result<TypicalSpatial, ClassAError> {
+    fn finish(&self, a0: &Vector3, phi: f64, s: f64) -> Result<TypicalSpatial, ClassAError> {
         let (axis, theta, sum) = self.sum(phi, s);
         let length = self.chord.norm() / sum.norm();
         if !(length.is_finite() && length > 0.0) {
@@ -164,7 +164,7 @@ impl TypicalSpatial {
     /// e.g. a chord pointing back against both tangents), [`ClassAError::NoClassASolution`] (every
     /// converged solution has a negative Class A margin; [`TypicalSpatial::candidates`] still
     /// returns them).
-    pub fn from_points(a: &[Vector3<f64>; 4], degree: usize) -> Result<Self, ClassAError> {
+    pub fn from_points(a: &[Vector3; 4], degree: usize) -> Result<Self, ClassAError> {
         let all = Self::candidates(a, degree)?;
         match all.first() {
             Some(best) if best.class_a_margin() >= 0.0 => Ok(*best),
@@ -188,7 +188,7 @@ impl TypicalSpatial {
     /// [`ClassAError::ToleranceNotMet`] when the rounded control points cannot meet the end
     /// conditions.
     pub fn generate(
-        a: &[Vector3<f64>; 4],
+        a: &[Vector3; 4],
         degree: usize,
         tolerance: f64,
     ) -> Result<(Self, BezierCurve<3>, Interpolation), ClassAError> {
@@ -205,7 +205,7 @@ impl TypicalSpatial {
     ///
     /// # Errors
     /// As [`TypicalSpatial::from_points`], except [`ClassAError::NoClassASolution`].
-    pub fn candidates(a: &[Vector3<f64>; 4], degree: usize) -> Result<Vec<Self>, ClassAError> {
+    pub fn candidates(a: &[Vector3; 4], degree: usize) -> Result<Vec<Self>, ClassAError> {
         let setup = Setup::new(a, degree)?;
         let (np, ns) = GRID;
         let mut grid = Vec::with_capacity(np * ns);
@@ -247,7 +247,7 @@ impl TypicalSpatial {
     /// # Errors
     /// As [`TypicalSpatial::from_points`], [`ClassAError::Optimizer`] if argmin fails.
     pub fn nelder_mead(
-        a: &[Vector3<f64>; 4],
+        a: &[Vector3; 4],
         degree: usize,
         max_iters: u64,
     ) -> Result<(Self, f64), ClassAError> {

@@ -13,11 +13,11 @@ use crate::ClassAError;
 /// # Errors
 /// [`ClassAError::NoPole`] if s e^{iθ} = 1, [`ClassAError::NonFinite`] for non-finite input.
 pub fn log_spiral_pole(
-    b0: &Vector2<f64>,
-    delta_b0: &Vector2<f64>,
+    b0: &Vector2,
+    delta_b0: &Vector2,
     s: f64,
     theta: f64,
-) -> Result<Vector2<f64>, ClassAError> {
+) -> Result<Vector2, ClassAError> {
     if !(b0.iter().chain(delta_b0.iter()).all(|x| x.is_finite())
         && s.is_finite()
         && theta.is_finite())
@@ -31,16 +31,16 @@ pub fn log_spiral_pole(
         return Err(ClassAError::NoPole { s, theta });
     }
     // Δb₀ / (1 − z) = Δb₀ · conj(1 − z) / |1 − z|².
-    let (x, y) = (delta_b0.x, delta_b0.y);
+    let (x, y) = (delta_b0.x(), delta_b0.y());
     Ok(b0 + Vector2::new(x * zr + y * zi, y * zr - x * zi) / den)
 }
 
 /// The pole as printed in eq. (19) (with unit Δb₀ = μ): kept to document the sign erratum.
 #[must_use]
-pub fn printed_pole_eq19(b0: &Vector2<f64>, mu: &Vector2<f64>, s: f64, theta: f64) -> Vector2<f64> {
+pub fn printed_pole_eq19(b0: &Vector2, mu: &Vector2, s: f64, theta: f64) -> Vector2 {
     let (sn, c) = theta.sin_cos();
-    let rx = b0.x + b0.x * s * s + mu.x - s * ((2.0 * b0.x + mu.x) * c + mu.y * sn);
-    let ry = b0.y + b0.y * s * s + mu.y - s * ((2.0 * b0.y + mu.y) * c + mu.x * sn);
+    let rx = b0.x() + b0.x() * s * s + mu.x() - s * ((2.0 * b0.x() + mu.x()) * c + mu.y() * sn);
+    let ry = b0.y() + b0.y() * s * s + mu.y() - s * ((2.0 * b0.y() + mu.y()) * c + mu.x() * sn);
     let rw = 1.0 + s * s - 2.0 * s * c;
     Vector2::new(rx / rw, ry / rw)
 }
@@ -49,14 +49,14 @@ pub fn printed_pole_eq19(b0: &Vector2<f64>, mu: &Vector2<f64>, s: f64, theta: f6
 /// max |(bᵢ₊₁ − ρ) − s e^{iθ}(bᵢ − ρ)| / |bᵢ₊₁ − ρ|. Zero (to rounding) iff all control points
 /// lie on one discrete log spiral about ρ with ratio s and angle θ (triangles ρ bᵢ bᵢ₊₁ similar).
 #[must_use]
-pub fn spiral_deviation(points: &[Vector2<f64>], pole: &Vector2<f64>, s: f64, theta: f64) -> f64 {
+pub fn spiral_deviation(points: &[Vector2], pole: &Vector2, s: f64, theta: f64) -> f64 {
     let (sn, c) = theta.sin_cos();
     points
         .windows(2)
         .map(|w| {
             let a = w[0] - pole;
             let b = w[1] - pole;
-            let za = Vector2::new(s * (c * a.x - sn * a.y), s * (sn * a.x + c * a.y));
+            let za = Vector2::new(s * (c * a.x() - sn * a.y()), s * (sn * a.x() + c * a.y()));
             (b - za).norm() / b.norm()
         })
         .fold(0.0, f64::max)
@@ -73,8 +73,8 @@ pub fn spiral_deviation(points: &[Vector2<f64>], pole: &Vector2<f64>, s: f64, th
 /// # Errors
 /// [`ClassAError::NoPole`] when s = 1 (the circles degenerate to lines) or the radical axes are
 /// parallel; [`ClassAError::NonFinite`] for non-finite points.
-pub fn apollonius_pole(b: &[Vector2<f64>; 4]) -> Result<Vector2<f64>, ClassAError> {
-    if !b.iter().all(|p| p.x.is_finite() && p.y.is_finite()) {
+pub fn apollonius_pole(b: &[Vector2; 4]) -> Result<Vector2, ClassAError> {
+    if !b.iter().all(|p| p.x().is_finite() && p.y().is_finite()) {
         return Err(ClassAError::NonFinite {
             name: "control points",
         });
@@ -95,12 +95,12 @@ pub fn apollonius_pole(b: &[Vector2<f64>; 4]) -> Result<Vector2<f64>, ClassAErro
     let (c2, k2) = circle(2);
     let (n0, r0) = ((c1 - c0) * 2.0, k1 - k0);
     let (n1, r1) = ((c2 - c1) * 2.0, k2 - k1);
-    let det = n0.x * n1.y - n0.y * n1.x;
+    let det = n0.x() * n1.y() - n0.y() * n1.x();
     if det == 0.0 || !det.is_finite() {
         return Err(ClassAError::NoPole { s, theta: f64::NAN });
     }
     Ok(Vector2::new(
-        (r0 * n1.y - r1 * n0.y) / det,
-        (n0.x * r1 - n1.x * r0) / det,
+        (r0 * n1.y() - r1 * n0.y()) / det,
+        (n0.x() * r1 - n1.x() * r0) / det,
     ))
 }

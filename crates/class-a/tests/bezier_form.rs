@@ -7,11 +7,9 @@ use nalgebra::{Complex, Matrix3};
 
 /// A planar typical curve in complex notation, with w(t) = 1 + t(z − 1), z = s e^{iθ}:
 /// x'(t) = n L μ w(t)ⁿ⁻¹ and x(t) = b₀ + L μ (w(t)ⁿ − 1)/(z − 1), from the parameters alone.
-fn planar_oracle(
-    t: &TypicalPlanar,
-) -> (impl Fn(f64) -> Vector2<f64>, impl Fn(f64) -> Vector2<f64>) {
+fn planar_oracle(t: &TypicalPlanar) -> (impl Fn(f64) -> Vector2, impl Fn(f64) -> Vector2) {
     let z = Complex::from_polar(t.s, t.theta);
-    let lmu = Complex::new(t.mu.x, t.mu.y) * t.length;
+    let lmu = Complex::new(t.mu.x(), t.mu.y()) * t.length;
     let (b0, n) = (t.b0, t.degree);
     let w = move |u: f64| Complex::new(1.0, 0.0) + (z - 1.0) * u;
     let position = move |u: f64| {
@@ -69,15 +67,14 @@ fn spatial_class_a_curves_match_their_legs_through_the_trait() {
     let n = typical.degree;
     let mut legs = vec![typical.v0 * typical.length];
     for j in 1..n {
-        legs.push(m * legs[j - 1]);
+        legs.push(Vector3::from(m * nalgebra::Vector3::from(legs[j - 1])));
     }
-    let points: Vec<Vector3<f64>> = (0..=n)
-        .map(|i| typical.b0 + legs[..i].iter().sum::<Vector3<f64>>())
+    let points: Vec<Vector3> = (0..=n)
+        .map(|i| typical.b0 + legs[..i].iter().sum::<Vector3>())
         .collect();
     let bernstein = |deg: usize, i: usize, u: f64| bez_core::bernstein(deg, i, u);
-    let position =
-        |u: f64| -> Vector3<f64> { (0..=n).map(|i| points[i] * bernstein(n, i, u)).sum() };
-    let velocity = |u: f64| -> Vector3<f64> {
+    let position = |u: f64| -> Vector3 { (0..=n).map(|i| points[i] * bernstein(n, i, u)).sum() };
+    let velocity = |u: f64| -> Vector3 {
         (0..n)
             .map(|j| legs[j] * (n as f64 * bernstein(n - 1, j, u)))
             .sum()

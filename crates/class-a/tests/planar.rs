@@ -7,7 +7,7 @@ use class_a::*;
     clippy::unwrap_used,
     reason = "shared test check: a failure is a test failure"
 )]
-fn check_interpolation(a: &[Vector2<f64>; 3], c: &TypicalPlanar, tol: f64) {
+fn check_interpolation(a: &[Vector2; 3], c: &TypicalPlanar, tol: f64) {
     let curve = c.curve().unwrap();
     let scale = (a[2] - a[0]).norm();
     assert!((curve.start() - a[0]).norm() <= tol * scale);
@@ -88,7 +88,7 @@ fn forbidden_band_predicts_feasibility() {
         for r in [0.2, 0.7, 1.5, 4.0] {
             let a2 = a1 + Vector2::new(ang.cos(), ang.sin()) * r;
             let f = planar_feasibility(&a0, &a1, &a2, 6).unwrap();
-            let delta = a2.y.atan2(a2.x);
+            let delta = a2.y().atan2(a2.x());
             let inside = delta > f.forbidden_chord_angles.0 && delta < f.forbidden_chord_angles.1;
             if (delta - f.forbidden_chord_angles.0).abs() > 1e-9
                 && (delta - f.forbidden_chord_angles.1).abs() > 1e-9
@@ -103,7 +103,7 @@ fn forbidden_band_predicts_feasibility() {
 fn bad_inputs() {
     let o = Vector2::new(0.0, 0.0);
     let x = Vector2::new(1.0, 0.0);
-    let e = |a: Vector2<f64>, b: Vector2<f64>, c: Vector2<f64>, n| {
+    let e = |a: Vector2, b: Vector2, c: Vector2, n| {
         TypicalPlanar::from_points(&a, &b, &c, n).unwrap_err()
     };
     assert!(matches!(

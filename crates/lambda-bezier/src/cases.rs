@@ -12,7 +12,7 @@ use crate::error::LambdaError;
 use crate::join::hermite_segment;
 
 /// Akima's (1970) standard test data: 11 points, flat, then a steep rise (Fig. 5).
-pub fn akima_data() -> Vec<Vector2<f64>> {
+pub fn akima_data() -> Vec<Vector2> {
     const X: [f64; 11] = [0.0, 2.0, 3.0, 5.0, 6.0, 8.0, 9.0, 11.0, 12.0, 14.0, 15.0];
     const Y: [f64; 11] = [
         10.0, 10.0, 10.0, 10.0, 10.0, 10.0, 10.5, 15.0, 50.0, 60.0, 85.0,
@@ -29,7 +29,7 @@ pub const AKIMA_LAMBDAS: [[f64; 5]; 2] =
 
 /// The circle example (section 4.2): P₀..P₆ of the two quartic λ-curves (n = 3),
 /// P₀(−1, 0), P₁(−1, 1.2), P₂(1, 1.2), P₃(1, 0), P₄(1, −1.2), P₅(−1, −1.2), P₆(−1, 0).
-pub fn circle_points() -> [Vector2<f64>; 7] {
+pub fn circle_points() -> [Vector2; 7] {
     [
         Vector2::new(-1.0, 0.0),
         Vector2::new(-1.0, 1.2),
@@ -63,8 +63,8 @@ pub fn circle_halves(lambda: f64) -> Result<[LambdaBezierCurve<2>; 2], LambdaErr
 /// points are the roots of its derivative in [0, 1] (bez-core's robust isolation), and the
 /// ends are checked too.
 pub fn max_radial_error(curve: &BezierCurve<2>) -> (f64, f64) {
-    let x: Vec<f64> = curve.points().iter().map(|p| p.x).collect();
-    let y: Vec<f64> = curve.points().iter().map(|p| p.y).collect();
+    let x: Vec<f64> = curve.points().iter().map(|p| p.x()).collect();
+    let y: Vec<f64> = curve.points().iter().map(|p| p.y()).collect();
     let r2: Vec<f64> = bernstein_product(&x, &x)
         .iter()
         .zip(bernstein_product(&y, &y))
@@ -141,7 +141,7 @@ pub const QUINTIC_LAMBDAS: [f64; 6] = [1.0, 0.0, -1.0, -2.0, -3.0, -4.0];
 
 /// Control polygons for Figs. 3 and 4 (ours: the paper prints no coordinates): an arch of
 /// 4 points (quartic λ-curves) and of 5 points (quintic).
-pub fn arch_points(n: usize) -> Vec<Vector2<f64>> {
+pub fn arch_points(n: usize) -> Vec<Vector2> {
     match n {
         3 => vec![
             Vector2::new(0.0, 0.0),
@@ -161,7 +161,7 @@ pub fn arch_points(n: usize) -> Vec<Vector2<f64>> {
 
 /// A closed leaf (Fig. 7, ours): P₀ = P₃ = (0, 0), P₁ = (−1.5, 2), P₂ = (1.5, 2), rotated by
 /// `angle` radians about the origin.
-pub fn leaf_points(angle: f64) -> Vec<Vector2<f64>> {
+pub fn leaf_points(angle: f64) -> Vec<Vector2> {
     let (s, c) = angle.sin_cos();
     [(0.0, 0.0), (-1.5, 2.0), (1.5, 2.0), (0.0, 0.0)]
         .iter()
@@ -206,7 +206,7 @@ pub fn vase_profile(n: usize, lambdas: &[f64]) -> Result<Vec<LambdaBezierCurve<2
             let (e0, d0) = (v(w[0].0), v(w[0].1));
             let (e1, d1) = (v(w[1].0), v(w[1].1));
             let k = n as f64 + l;
-            let inner: Vec<Vector2<f64>> = if n == 3 {
+            let inner: Vec<Vector2> = if n == 3 {
                 Vec::new()
             } else {
                 // One free point per extra degree, spread on the chord between the two legs.
@@ -239,7 +239,7 @@ mod tests {
             .fold(0.0, f64::max);
         assert!(sampled <= e + 1e-15 && sampled > e - 1e-8, "{sampled} {e}");
         // Midpoint: B(1/2) = (0, (8·1.068 + 7.2)/16) at λ = 0.56, computed by hand.
-        assert!((upper.eval(0.5).unwrap().y - 0.984).abs() < 1e-12);
+        assert!((upper.eval(0.5).unwrap().y() - 0.984).abs() < 1e-12);
         // The classical quarter circle with the midpoint on the circle: 2.7e-4.
         let k = 4.0 * (2f64.sqrt() - 1.0) / 3.0;
         let (q, _) = max_radial_error(&cubic_quarter_circle(k).unwrap());
@@ -260,8 +260,8 @@ mod tests {
                 // A vase profile: positive radius, height increasing.
                 for c in &v {
                     let q = c.sample_uniform(50);
-                    assert!(q.iter().all(|p| p.x > 0.3));
-                    assert!(q.windows(2).all(|w| w[1].y > w[0].y));
+                    assert!(q.iter().all(|p| p.x() > 0.3));
+                    assert!(q.windows(2).all(|w| w[1].y() > w[0].y()));
                 }
                 for w in v.windows(2) {
                     assert_eq!(continuity(&w[0], &w[1], 1e-12), Continuity::C1);

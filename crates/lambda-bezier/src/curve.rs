@@ -1,6 +1,6 @@
 //! `LambdaBezierCurve`: the degree n + 1 λ-Bézier curve of Definition 2, eq. (6).
 
-use bez_core::{BezierCurve, BezierForm, CoreError, SVector};
+use bez_core::{BezierCurve, BezierForm, CoreError, Vector};
 
 use crate::basis::corner_cut_ratio;
 use crate::error::LambdaError;
@@ -52,7 +52,7 @@ use crate::range::LambdaRange;
 /// ];
 /// let c = LambdaBezierCurve::new(p, 0.5)?;
 /// assert_eq!(c.degree(), 4);
-/// let d: Vector2<f64> = c.start_tangent();
+/// let d: Vector2 = c.start_tangent();
 /// assert!((d - Vector2::new(3.5, 7.0)).norm() < 1e-12); // (n + λ)(P₁ − P₀)
 /// assert_eq!(c.derivative().start(), c.as_bezier().derivative().start());
 /// assert!((c.eval(0.5)? - c.as_bezier().eval(0.5)?).norm() == 0.0);
@@ -65,7 +65,7 @@ use crate::range::LambdaRange;
     serde(try_from = "CurveRepr<D>", into = "CurveRepr<D>")
 )]
 pub struct LambdaBezierCurve<const D: usize> {
-    points: Vec<SVector<f64, D>>,
+    points: Vec<Vector<D>>,
     lambda: f64,
     range: LambdaRange,
     bezier: BezierCurve<D>,
@@ -75,7 +75,7 @@ pub struct LambdaBezierCurve<const D: usize> {
 #[cfg(feature = "serde")]
 #[derive(serde::Serialize, serde::Deserialize)]
 struct CurveRepr<const D: usize> {
-    points: Vec<SVector<f64, D>>,
+    points: Vec<Vector<D>>,
     lambda: f64,
 }
 
@@ -120,7 +120,7 @@ impl<const D: usize> LambdaBezierCurve<D> {
     /// [`CoreError::Empty`] / [`CoreError::NonFinite`] (wrapped), [`LambdaError::DegreeTooLow`]
     /// for fewer than 3 points, [`LambdaError::NonFiniteLambda`],
     /// [`LambdaError::LambdaOutOfRange`] (the message states the valid interval).
-    pub fn new(points: Vec<SVector<f64, D>>, lambda: f64) -> Result<Self, LambdaError> {
+    pub fn new(points: Vec<Vector<D>>, lambda: f64) -> Result<Self, LambdaError> {
         if points.is_empty() {
             return Err(CoreError::Empty.into());
         }
@@ -143,12 +143,12 @@ impl<const D: usize> LambdaBezierCurve<D> {
     ///
     /// # Errors
     /// As [`LambdaBezierCurve::new`].
-    pub fn from_slice(points: &[SVector<f64, D>], lambda: f64) -> Result<Self, LambdaError> {
+    pub fn from_slice(points: &[Vector<D>], lambda: f64) -> Result<Self, LambdaError> {
         Self::new(points.to_vec(), lambda)
     }
 
     /// The control points P₀..Pₙ.
-    pub fn points(&self) -> &[SVector<f64, D>] {
+    pub fn points(&self) -> &[Vector<D>] {
         &self.points
     }
 
@@ -198,17 +198,17 @@ impl<const D: usize> LambdaBezierCurve<D> {
     ///
     /// # Errors
     /// t outside [0, 1].
-    pub fn eval_derivatives(&self, t: f64, k: usize) -> Result<Vec<SVector<f64, D>>, LambdaError> {
+    pub fn eval_derivatives(&self, t: f64, k: usize) -> Result<Vec<Vector<D>>, LambdaError> {
         Ok(self.bezier.eval_derivatives(t, k)?)
     }
 
     /// B'(0) = (n + λ)(P₁ − P₀) (Property 1 of the curve).
-    pub fn start_tangent(&self) -> SVector<f64, D> {
+    pub fn start_tangent(&self) -> Vector<D> {
         (self.n() as f64 + self.lambda) * (self.points[1] - self.points[0])
     }
 
     /// B'(1) = (n + λ)(Pₙ − Pₙ₋₁) (Property 1 of the curve).
-    pub fn end_tangent(&self) -> SVector<f64, D> {
+    pub fn end_tangent(&self) -> Vector<D> {
         let n = self.n();
         (n as f64 + self.lambda) * (self.points[n] - self.points[n - 1])
     }
@@ -230,10 +230,7 @@ impl<const D: usize> LambdaBezierCurve<D> {
     ///
     /// # Errors
     /// Non-finite mapped points.
-    pub fn map_points(
-        &self,
-        f: impl Fn(&SVector<f64, D>) -> SVector<f64, D>,
-    ) -> Result<Self, LambdaError> {
+    pub fn map_points(&self, f: impl Fn(&Vector<D>) -> Vector<D>) -> Result<Self, LambdaError> {
         Self::new(self.points.iter().map(f).collect(), self.lambda)
     }
 }
@@ -252,7 +249,7 @@ mod tests {
 
     use super::*;
 
-    fn pts() -> Vec<Vector2<f64>> {
+    fn pts() -> Vec<Vector2> {
         vec![
             Vector2::new(0.0, 0.0),
             Vector2::new(1.0, 2.0),
@@ -272,7 +269,7 @@ mod tests {
             Err(LambdaError::DegreeTooLow { n: 1 })
         ));
         let mut p = pts();
-        p[2].x = f64::NAN;
+        p[2][0] = f64::NAN;
         assert!(matches!(
             LambdaBezierCurve::new(p, 0.0),
             Err(LambdaError::Core(CoreError::NonFinite { index: 2 }))

@@ -26,9 +26,7 @@ use crate::error::LambdaError;
 /// # Errors
 /// [`LambdaError::TooFewPoints`] below 2 points, [`LambdaError::NotIncreasing`] if the
 /// abscissae do not increase strictly, `CoreError::NonFinite` for non-finite data.
-pub fn shape_preserving_polygons(
-    data: &[Vector2<f64>],
-) -> Result<Vec<[Vector2<f64>; 3]>, LambdaError> {
+pub fn shape_preserving_polygons(data: &[Vector2]) -> Result<Vec<[Vector2; 3]>, LambdaError> {
     if data.len() < 2 {
         return Err(LambdaError::TooFewPoints {
             needed: 2,
@@ -37,19 +35,19 @@ pub fn shape_preserving_polygons(
     }
     if let Some(index) = data
         .iter()
-        .position(|p| !(p.x.is_finite() && p.y.is_finite()))
+        .position(|p| !(p.x().is_finite() && p.y().is_finite()))
     {
         return Err(bez_core::CoreError::NonFinite { index }.into());
     }
-    if let Some(i) = (1..data.len()).find(|&i| data[i].x <= data[i - 1].x) {
+    if let Some(i) = (1..data.len()).find(|&i| data[i].x() <= data[i - 1].x()) {
         return Err(LambdaError::NotIncreasing {
             index: i,
-            value: data[i].x,
+            value: data[i].x(),
         });
     }
     let s: Vec<f64> = data
         .windows(2)
-        .map(|w| (w[1].y - w[0].y) / (w[1].x - w[0].x))
+        .map(|w| (w[1].y() - w[0].y()) / (w[1].x() - w[0].x()))
         .collect();
     let last = s.len() - 1;
     let mut m = vec![0.0; data.len()];
@@ -90,10 +88,10 @@ pub fn shape_preserving_polygons(
         let (mi, mj, si) = (m[i], m[i + 1], s[i]);
         if (mi - si) * (mj - si) < 0.0 {
             // Tangent lines y = p.y + mi (x − p.x) and y = q.y + mj (x − q.x) meet strictly inside.
-            let x = (q.y - p.y + mi * p.x - mj * q.x) / (mi - mj);
-            out.push([p, Vector2::new(x, p.y + mi * (x - p.x)), q]);
+            let x = (q.y() - p.y() + mi * p.x() - mj * q.x()) / (mi - mj);
+            out.push([p, Vector2::new(x, p.y() + mi * (x - p.x())), q]);
         } else {
-            let h = q.x - p.x;
+            let h = q.x() - p.x();
             let l = p + Vector2::new(h / 4.0, mi * h / 4.0);
             let r = q - Vector2::new(h / 4.0, mj * h / 4.0);
             let z = (l + r) / 2.0;
@@ -112,7 +110,7 @@ pub fn shape_preserving_polygons(
 /// As [`shape_preserving_polygons`]; [`LambdaError::LambdaCount`] if `lambdas` is empty;
 /// λ outside [−2, 1].
 pub fn shape_preserving_curves(
-    data: &[Vector2<f64>],
+    data: &[Vector2],
     lambdas: &[f64],
 ) -> Result<Vec<LambdaBezierCurve<2>>, LambdaError> {
     let polygons = shape_preserving_polygons(data)?;
@@ -157,9 +155,9 @@ mod tests {
             let line = curves[0].points();
             for d in &data[1..5] {
                 let cross = (line[2] - line[0]).perp(&(d - line[0]));
-                assert!(cross == 0.0 && d.x > line[0].x && d.x < line[2].x);
+                assert!(cross == 0.0 && d.x() > line[0].x() && d.x() < line[2].x());
             }
-            for d in data.iter().filter(|d| !(1.0..9.0).contains(&d.x)) {
+            for d in data.iter().filter(|d| !(1.0..9.0).contains(&d.x())) {
                 assert!(
                     curves
                         .iter()
@@ -170,7 +168,10 @@ mod tests {
             for c in &curves {
                 let q = c.as_bezier().points();
                 for w in q.windows(2) {
-                    assert!(w[1].x >= w[0].x && w[1].y >= w[0].y - 1e-12, "{q:?}");
+                    assert!(
+                        w[1].x() >= w[0].x() && w[1].y() >= w[0].y() - 1e-12,
+                        "{q:?}"
+                    );
                 }
             }
         }
@@ -184,12 +185,12 @@ mod tests {
             Err(LambdaError::TooFewPoints { .. })
         ));
         let mut bad = d.clone();
-        bad[3].x = bad[2].x;
+        bad[3][0] = bad[2].x();
         assert!(matches!(
             shape_preserving_polygons(&bad),
             Err(LambdaError::NotIncreasing { index: 3, .. })
         ));
-        bad[3].x = f64::NAN;
+        bad[3][0] = f64::NAN;
         assert!(shape_preserving_polygons(&bad).is_err());
         assert!(matches!(
             shape_preserving_curves(&d, &[]),

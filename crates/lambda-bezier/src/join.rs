@@ -8,7 +8,7 @@
 //! The λ values and degrees of the two curves are free: a joint fixes only Q₀ and Q₁.
 //! n + λ = 0 (possible at the lower end of the range for n ≤ 5) makes the tangent vanish.
 
-use bez_core::{BezierForm, SVector};
+use bez_core::{BezierForm, Vector};
 
 use crate::curve::LambdaBezierCurve;
 use crate::error::LambdaError;
@@ -34,7 +34,7 @@ pub fn continuity<const D: usize>(
     tol: f64,
 ) -> Continuity {
     let (pa, pb) = (
-        *a.points().last().unwrap_or(&SVector::zeros()),
+        *a.points().last().unwrap_or(&Vector::zeros()),
         b.points()[0],
     );
     let scale = 1.0 + pa.norm().max(pb.norm());
@@ -104,11 +104,11 @@ pub fn join_c1<const D: usize>(
 /// # Errors
 /// [`LambdaError::DegenerateJoint`] if n + λ ≤ 0, λ out of range, non-finite points.
 pub fn hermite_segment<const D: usize>(
-    start: SVector<f64, D>,
-    start_derivative: SVector<f64, D>,
-    inner: &[SVector<f64, D>],
-    end: SVector<f64, D>,
-    end_derivative: SVector<f64, D>,
+    start: Vector<D>,
+    start_derivative: Vector<D>,
+    inner: &[Vector<D>],
+    end: Vector<D>,
+    end_derivative: Vector<D>,
     lambda: f64,
 ) -> Result<LambdaBezierCurve<D>, LambdaError> {
     let n = inner.len() + 3;
@@ -127,9 +127,7 @@ pub fn hermite_segment<const D: usize>(
     LambdaBezierCurve::new(p, lambda)
 }
 
-fn unit_end_tangent<const D: usize>(
-    a: &LambdaBezierCurve<D>,
-) -> Result<SVector<f64, D>, LambdaError> {
+fn unit_end_tangent<const D: usize>(a: &LambdaBezierCurve<D>) -> Result<Vector<D>, LambdaError> {
     let t = a.end_tangent();
     let len = t.norm();
     if len == 0.0 || !len.is_finite() {

@@ -24,7 +24,7 @@
 //! ];
 //! let half_circle = LambdaBezierCurve::new(p, 0.56)?; // the paper's circle example (4.2)
 //! let top = half_circle.eval(0.5)?;
-//! assert!((top.y - 1.0).abs() < 0.02);
+//! assert!((top.y() - 1.0).abs() < 0.02);
 //! assert_eq!(LambdaRange::new(3)?.min(), -3.0);
 //! assert!(half_circle.with_lambda(-3.5).is_err()); // outside [-3, 1]
 //! # Ok::<(), lambda_bezier::LambdaError>(())

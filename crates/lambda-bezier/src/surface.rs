@@ -1,6 +1,6 @@
 //! Tensor-product λ-Bézier surfaces (Definition 3, eq. (8)), with degree and λ per direction.
 
-use bez_core::{BezierSurface, CoreError, SVector};
+use bez_core::{BezierSurface, CoreError, Vector};
 
 use crate::curve::bezier_points;
 use crate::error::LambdaError;
@@ -20,7 +20,7 @@ use crate::range::LambdaRange;
     serde(try_from = "SurfaceRepr<D>", into = "SurfaceRepr<D>")
 )]
 pub struct LambdaBezierSurface<const D: usize> {
-    rows: Vec<Vec<SVector<f64, D>>>,
+    rows: Vec<Vec<Vector<D>>>,
     lambda_u: f64,
     lambda_v: f64,
     bezier: BezierSurface<D>,
@@ -30,7 +30,7 @@ pub struct LambdaBezierSurface<const D: usize> {
 #[cfg(feature = "serde")]
 #[derive(serde::Serialize, serde::Deserialize)]
 struct SurfaceRepr<const D: usize> {
-    rows: Vec<Vec<SVector<f64, D>>>,
+    rows: Vec<Vec<Vector<D>>>,
     lambda_u: f64,
     lambda_v: f64,
 }
@@ -61,7 +61,7 @@ impl<const D: usize> LambdaBezierSurface<D> {
     /// [`CoreError::Empty`], [`CoreError::RaggedGrid`], [`CoreError::NonFinite`] (wrapped),
     /// [`LambdaError::DegreeTooLow`] in either direction, λ out of the range of its degree.
     pub fn new(
-        rows: Vec<Vec<SVector<f64, D>>>,
+        rows: Vec<Vec<Vector<D>>>,
         lambda_u: f64,
         lambda_v: f64,
     ) -> Result<Self, LambdaError> {
@@ -117,7 +117,7 @@ impl<const D: usize> LambdaBezierSurface<D> {
     }
 
     /// The control grid, row i = u index.
-    pub fn rows(&self) -> &[Vec<SVector<f64, D>>] {
+    pub fn rows(&self) -> &[Vec<Vector<D>>] {
         &self.rows
     }
 
@@ -143,7 +143,7 @@ impl<const D: usize> LambdaBezierSurface<D> {
     ///
     /// # Errors
     /// u or v outside [0, 1].
-    pub fn eval(&self, u: f64, v: f64) -> Result<SVector<f64, D>, LambdaError> {
+    pub fn eval(&self, u: f64, v: f64) -> Result<Vector<D>, LambdaError> {
         Ok(self.bezier.eval(u, v)?)
     }
 
@@ -157,7 +157,7 @@ impl<const D: usize> LambdaBezierSurface<D> {
         v: f64,
         p: usize,
         q: usize,
-    ) -> Result<SVector<f64, D>, LambdaError> {
+    ) -> Result<Vector<D>, LambdaError> {
         Ok(self.bezier.eval_partial(u, v, p, q)?)
     }
 
@@ -168,17 +168,16 @@ impl<const D: usize> LambdaBezierSurface<D> {
 }
 
 fn to_bezier<const D: usize>(
-    rows: &[Vec<SVector<f64, D>>],
+    rows: &[Vec<Vector<D>>],
     lambda_u: f64,
     lambda_v: f64,
 ) -> Result<BezierSurface<D>, LambdaError> {
     // Corner cutting along v in every row, then along u in every column.
-    let along_v: Vec<Vec<SVector<f64, D>>> =
-        rows.iter().map(|r| bezier_points(r, lambda_v)).collect();
+    let along_v: Vec<Vec<Vector<D>>> = rows.iter().map(|r| bezier_points(r, lambda_v)).collect();
     let cols = along_v[0].len();
     let mut out = vec![Vec::with_capacity(cols); rows.len() + 1];
     for j in 0..cols {
-        let column: Vec<SVector<f64, D>> = along_v.iter().map(|r| r[j]).collect();
+        let column: Vec<Vector<D>> = along_v.iter().map(|r| r[j]).collect();
         for (i, q) in bezier_points(&column, lambda_u).into_iter().enumerate() {
             out[i].push(q);
         }
@@ -193,7 +192,7 @@ mod tests {
     use super::*;
     use crate::{LambdaBasis, LambdaBezierCurve};
 
-    fn grid(n: usize, m: usize) -> Vec<Vec<Vector3<f64>>> {
+    fn grid(n: usize, m: usize) -> Vec<Vec<Vector3>> {
         (0..=n)
             .map(|i| {
                 (0..=m)
@@ -276,7 +275,7 @@ mod tests {
             Err(LambdaError::LambdaOutOfRange { n: 2, .. })
         ));
         let mut g = grid(2, 2);
-        g[2][1].z = f64::NAN;
+        g[2][1][2] = f64::NAN;
         assert!(LambdaBezierSurface::new(g, 0.0, 0.0).is_err());
         let mut s = LambdaBezierSurface::new(grid(2, 3), 0.0, 0.0).unwrap();
         assert!(s.set_lambdas(0.0, -3.1).is_err());

@@ -9,7 +9,7 @@ use nalgebra::{DMatrix, Dyn, U3};
 
 /// A side curve expressed in a spline space: coefficients and the fit's max sample error.
 pub(crate) struct Fitted {
-    pub(crate) coefs: Vec<Vector3<f64>>,
+    pub(crate) coefs: Vec<Vector3>,
     pub(crate) error: f64,
 }
 
@@ -34,7 +34,7 @@ pub(crate) fn fit(
     }
     let default_count = (4 * n).max(64);
     let (ts, values) = samples(side, curve, space, default_count)?;
-    let mut coefs: Vec<Option<Vector3<f64>>> = vec![None; n];
+    let mut coefs: Vec<Option<Vector3>> = vec![None; n];
     for (at_end, count) in [(false, clamp_start), (true, clamp_end)] {
         if count == 0 {
             continue;
@@ -74,7 +74,7 @@ pub(crate) fn fit(
                     None => a[(row, index[g])] += w,
                 }
             }
-            b.set_row(row, &target.transpose());
+            b.set_row(row, &nalgebra::RowVector3::from(target.to_array()));
         }
         let svd = a.svd(true, true);
         let smax = svd.singular_values.max();
@@ -96,17 +96,17 @@ pub(crate) fn fit(
             coefs[i] = Some(Vector3::new(x[(k, 0)], x[(k, 1)], x[(k, 2)]));
         }
     }
-    let coefs: Vec<Vector3<f64>> = coefs.into_iter().map(Option::unwrap_or_default).collect();
+    let coefs: Vec<Vector3> = coefs.into_iter().map(Option::unwrap_or_default).collect();
     let mut error: f64 = 0.0;
     for (&t, value) in ts.iter().zip(&values) {
         let (support, vals) = space.basis_at(t);
-        let p: Vector3<f64> = support.iter().zip(&vals).map(|(&g, &w)| coefs[g] * w).sum();
+        let p: Vector3 = support.iter().zip(&vals).map(|(&g, &w)| coefs[g] * w).sum();
         error = error.max((p - value).norm());
     }
     Ok(Fitted { coefs, error })
 }
 
-fn check_finite(v: &Vector3<f64>) -> Result<(), Error> {
+fn check_finite(v: &Vector3) -> Result<(), Error> {
     match v.iter().find(|x| !x.is_finite()) {
         Some(&value) => Err(Error::NonFinite {
             what: "boundary sample",
@@ -121,7 +121,7 @@ fn samples(
     curve: &SideCurve,
     space: &Space,
     count: usize,
-) -> Result<(Vec<f64>, Vec<Vector3<f64>>), Error> {
+) -> Result<(Vec<f64>, Vec<Vector3>), Error> {
     let uniform =
         |count: usize| -> Vec<f64> { (0..count).map(|i| i as f64 / (count - 1) as f64).collect() };
     let out = match curve {
@@ -175,7 +175,7 @@ fn jet(
     curve: &SideCurve,
     at_end: bool,
     count: usize,
-) -> Result<Vec<Vector3<f64>>, Error> {
+) -> Result<Vec<Vector3>, Error> {
     let t = if at_end { 1.0 } else { 0.0 };
     let out = match curve {
         SideCurve::Bezier(c) => c.eval_derivatives(t, count - 1)?,
@@ -229,7 +229,7 @@ mod tests {
     fn clamped_fit_reproduces_polynomials_and_interpolates_ends() {
         let space = Space::new("v", 5, 3, 2, false).unwrap();
         // A cubic: exact in the space.
-        let f = |t: f64, d: usize| -> Vector3<f64> {
+        let f = |t: f64, d: usize| -> Vector3 {
             match d {
                 0 => Vector3::new(t * t * t - t, 2.0 * t, 1.0 - t * t),
                 1 => Vector3::new(3.0 * t * t - 1.0, 2.0, -2.0 * t),
@@ -240,7 +240,7 @@ mod tests {
         let fitted = fit("v=0", &curve, &space, 2, 3).unwrap();
         assert!(fitted.error < 1e-13, "{}", fitted.error);
         // A non-polynomial function: the clamped ends still interpolate value and slope.
-        let g = |t: f64, d: usize| -> Vector3<f64> {
+        let g = |t: f64, d: usize| -> Vector3 {
             let s = if d == 0 {
                 (4.0 * t).sin()
             } else {
@@ -260,10 +260,10 @@ mod tests {
         for (d, at, end) in [(&d0, 0.0, 0), (&d1, 1.0, 1)] {
             for order in 0..2 {
                 let value: f64 = (0..space.n_coef)
-                    .map(|i| d[(order, i)] * fitted.coefs[i].x)
+                    .map(|i| d[(order, i)] * fitted.coefs[i].x())
                     .sum();
                 assert!(
-                    (value - g(at, order).x).abs() < 1e-12,
+                    (value - g(at, order).x()).abs() < 1e-12,
                     "end {end} order {order}"
                 );
             }

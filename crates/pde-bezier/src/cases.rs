@@ -53,13 +53,13 @@ pub struct Case {
 impl Exact {
     /// X(u, v).
     #[must_use]
-    pub fn eval(&self, u: f64, v: f64) -> Vector3<f64> {
+    pub fn eval(&self, u: f64, v: f64) -> Vector3 {
         self.eval_du(u, v, 0)
     }
 
     /// ∂^d X/∂u^d (u, v) for d = 0 or 1 (what the side conditions need).
     #[must_use]
-    pub fn eval_du(&self, u: f64, v: f64, d: usize) -> Vector3<f64> {
+    pub fn eval_du(&self, u: f64, v: f64, d: usize) -> Vector3 {
         match *self {
             Self::CircleSphereBlend { a, theta } => {
                 let s = a.sqrt();
@@ -196,7 +196,7 @@ fn cylinder_plane_coefficients() -> CylinderPlaneCoefficients {
     }
 }
 
-fn sampled(f: impl Fn(f64) -> Vector3<f64>) -> SideCurve {
+fn sampled(f: impl Fn(f64) -> Vector3) -> SideCurve {
     SideCurve::from_function(SIDE_SAMPLES, 1, |t, _| f(t))
 }
 

@@ -65,7 +65,7 @@ impl PatchGrid {
     ///
     /// # Errors
     /// [`Error::ParameterOutOfRange`] outside [0, 1]².
-    pub fn eval(&self, u: f64, v: f64) -> Result<Vector3<f64>, Error> {
+    pub fn eval(&self, u: f64, v: f64) -> Result<Vector3, Error> {
         for t in [u, v] {
             if !(0.0..=1.0).contains(&t) {
                 return Err(Error::ParameterOutOfRange { value: t });
@@ -82,7 +82,7 @@ impl PatchGrid {
     /// [`Error::NonFinite`] when the exact solution returns a non-finite value.
     pub fn error_norms(
         &self,
-        exact: impl Fn(f64, f64) -> Vector3<f64>,
+        exact: impl Fn(f64, f64) -> Vector3,
         tau: usize,
     ) -> Result<ErrorNorms, Error> {
         let tau = tau.max(1);

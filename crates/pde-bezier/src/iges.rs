@@ -105,7 +105,7 @@ pub fn write_iges(surface: &BSplineSurface, name: &str) -> Result<String, Error>
     for j in 0..cv {
         for i in 0..cu {
             let p = surface.points[i * cv + j];
-            params.extend([real(p.x), real(p.y), real(p.z)]);
+            params.extend([real(p.x()), real(p.y()), real(p.z())]);
         }
     }
     let first = |k: &[f64]| k.first().copied().unwrap_or(0.0);

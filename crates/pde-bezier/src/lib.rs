@@ -31,7 +31,7 @@
 //! let mut x = BezierSurface::from_flat(2, 2, pts)?;
 //! // Bernstein coefficients of u² − v²: u² → (0, 0, 1), v² likewise.
 //! let z = [0.0, 0.0, -1.0, 0.0, 0.0, -1.0, 1.0, 1.0, 0.0];
-//! let pts: Vec<_> = x.points().iter().zip(z).map(|(p, z)| Vector3::new(p.x, p.y, z)).collect();
+//! let pts: Vec<_> = x.points().iter().zip(z).map(|(p, z)| Vector3::new(p.x(), p.y(), z)).collect();
 //! x = BezierSurface::from_flat(2, 2, pts)?;
 //! let problem = Problem::manufactured(Operator::second_order(1.0, 1.0)?, &x)?;
 //! let sol = solve(&problem, &Discretization::single(4, 4), Method::BernsteinLeastSquares)?;

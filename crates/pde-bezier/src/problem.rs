@@ -123,11 +123,11 @@ pub enum SideCurve {
     /// and t = 1 (to clamp the fit so that corners meet). Fitted by clamped least squares.
     Sampled {
         /// Samples at uniform parameters, first at t = 0, last at t = 1.
-        values: Vec<Vector3<f64>>,
+        values: Vec<Vector3>,
         /// [f(0), f'(0), f''(0), …].
-        start_jet: Vec<Vector3<f64>>,
+        start_jet: Vec<Vector3>,
         /// [f(1), f'(1), f''(1), …].
-        end_jet: Vec<Vector3<f64>>,
+        end_jet: Vec<Vector3>,
     },
 }
 
@@ -135,7 +135,7 @@ impl SideCurve {
     /// Samples a function given with its derivatives: `f(t, d)` is the d-th derivative at t.
     ///
     /// `jet` derivative orders 0..jet are recorded at both ends for clamping.
-    pub fn from_function(count: usize, jet: usize, f: impl Fn(f64, usize) -> Vector3<f64>) -> Self {
+    pub fn from_function(count: usize, jet: usize, f: impl Fn(f64, usize) -> Vector3) -> Self {
         let count = count.max(2);
         let values = (0..count)
             .map(|i| f(i as f64 / (count - 1) as f64, 0))

@@ -13,7 +13,7 @@ use nalgebra::{DMatrix, Dyn, OMatrix, U3};
 /// Three right-hand sides (x, y, z) as columns.
 type Rhs3 = OMatrix<f64, Dyn, U3>;
 /// Control points fixed by the sides (None = free) and the largest boundary-fit error.
-type Fixed = (Vec<Option<Vector3<f64>>>, f64);
+type Fixed = (Vec<Option<Vector3>>, f64);
 
 /// How the free control points are determined.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
@@ -81,7 +81,7 @@ pub struct Assembly {
     l: usize,
     r: usize,
     patches: Vec<PatchMap>,
-    fixed: Vec<Option<Vector3<f64>>>,
+    fixed: Vec<Option<Vector3>>,
     fit_error: f64,
     k: usize,
 }
@@ -290,8 +290,7 @@ impl Assembly {
             }
         }
         let nf = free.len();
-        let mut coefs: Vec<Vector3<f64>> =
-            self.fixed.iter().map(|f| f.unwrap_or_default()).collect();
+        let mut coefs: Vec<Vector3> = self.fixed.iter().map(|f| f.unwrap_or_default()).collect();
         if nf > 0 {
             let (a, b) = match method {
                 Method::Collocation => self.collocation_system(&index, nf)?,
@@ -344,7 +343,7 @@ impl Assembly {
                 for (cb, &gb) in patch.support.iter().enumerate() {
                     let v = local_a[(ra, cb)];
                     match self.fixed[gb] {
-                        Some(p) => rhs -= p.transpose() * v,
+                        Some(p) => rhs -= nalgebra::RowVector3::from(p.to_array()) * v,
                         None => a[(ia, index[gb])] += v,
                     }
                 }
@@ -387,7 +386,7 @@ impl Assembly {
             let mut rhs = w.transpose() * &patch.target;
             for (c, &gc) in patch.support.iter().enumerate() {
                 match self.fixed[gc] {
-                    Some(p) => rhs -= p.transpose() * lrow[c],
+                    Some(p) => rhs -= nalgebra::RowVector3::from(p.to_array()) * lrow[c],
                     None => a[(row, index[gc])] += lrow[c],
                 }
             }
@@ -404,7 +403,7 @@ impl Assembly {
         Ok((a, b))
     }
 
-    fn finish(&self, coefs: &[Vector3<f64>], unknowns: usize) -> Result<Solution, Error> {
+    fn finish(&self, coefs: &[Vector3], unknowns: usize) -> Result<Solution, Error> {
         let weight = self.su.width() * self.sv.width();
         let mut objective = 0.0;
         let mut bound: f64 = 0.0;
@@ -440,7 +439,7 @@ impl Assembly {
 
 impl Assembly {
     /// The clamped B-spline form: c_clamped = Z_u c Z_vᵀ (Z the periodic closure, or I).
-    fn spline(&self, coefs: &[Vector3<f64>]) -> BSplineSurface {
+    fn spline(&self, coefs: &[Vector3]) -> BSplineSurface {
         let (nu, nv) = (self.su.n_coef, self.sv.n_coef);
         let expand = |space: &Space| -> DMatrix<f64> {
             space
@@ -570,7 +569,7 @@ fn rhs_on_patch(
 /// The control points fixed by the sides, with corner consistency checked.
 fn fixed_points(problem: &Problem, su: &Space, sv: &Space, half: usize) -> Result<Fixed, Error> {
     let (nu, nv) = (su.n_coef, sv.n_coef);
-    let mut fixed: Vec<Option<(Vector3<f64>, usize)>> = vec![None; nu * nv];
+    let mut fixed: Vec<Option<(Vector3, usize)>> = vec![None; nu * nv];
     let mut fit_error: f64 = 0.0;
     let sides = [&problem.u0, &problem.u1, &problem.v0, &problem.v1];
     let is_fixed = |s: &Side| matches!(s, Side::Fixed(_));

@@ -20,7 +20,7 @@ pub struct BSplineSurface {
     /// Full knot vector in v.
     pub knots_v: Vec<f64>,
     /// Control points, count_u × count_v, row-major with u outer.
-    pub points: Vec<Vector3<f64>>,
+    pub points: Vec<Vector3>,
 }
 
 impl BSplineSurface {
@@ -81,7 +81,7 @@ impl BSplineSurface {
     ///
     /// # Errors
     /// [`Error::ParameterOutOfRange`] outside the knot range.
-    pub fn eval(&self, u: f64, v: f64) -> Result<Vector3<f64>, Error> {
+    pub fn eval(&self, u: f64, v: f64) -> Result<Vector3, Error> {
         let (iu, bu) = basis(&self.knots_u, self.degree_u, u)?;
         let (iv, bv) = basis(&self.knots_v, self.degree_v, v)?;
         let cv = self.count_v();

@@ -91,9 +91,9 @@ pub fn write_step(surface: &BSplineSurface, name: &str) -> Result<String, Error>
             s,
             "#{}=CARTESIAN_POINT('',({},{},{}));",
             first_point + k,
-            real(p.x),
-            real(p.y),
-            real(p.z)
+            real(p.x()),
+            real(p.y()),
+            real(p.z())
         );
     }
     let (cu, cv) = (surface.count_u(), surface.count_v());
@@ -342,7 +342,7 @@ pub fn read_step(text: &str) -> Result<BSplineSurface, Error> {
             _ => Err(bad()),
         }
     };
-    let point = |id: usize| -> Result<Vector3<f64>, Error> {
+    let point = |id: usize| -> Result<Vector3, Error> {
         match entities.get(&id) {
             Some((n, p)) if n == "CARTESIAN_POINT" && p.len() == 2 => {
                 let c = nums(&p[1])?;

@@ -31,20 +31,20 @@ fn exact_solutions_solve_their_pdes() {
     // Problem (5)'s boundary: radius √3 at height 3, radius 3 at height 0.
     let e = Exact::CircleSphereBlend { a: 1.0, theta: 1.0 };
     let p = e.eval(0.0, 0.0);
-    assert!((p.x - 3.0_f64.sqrt()).abs() < 1e-15 && (p.z - 3.0).abs() < 1e-15);
+    assert!((p.x() - 3.0_f64.sqrt()).abs() < 1e-15 && (p.z() - 3.0).abs() < 1e-15);
     // Fig. 4: plane trim circle at u = 0, cylinder at u = 1, X_u radial inward / vertical.
     let e = Exact::CylinderPlane;
     let p = e.eval(0.0, 0.25);
     assert!((p - bez_core::Vector3::new(0.0, 2.0, 0.0)).norm() < 1e-12);
     let q = e.eval(0.0, 0.0);
-    assert!((q.z - q.x / 3.0_f64.sqrt()).abs() < 1e-12);
+    assert!((q.z() - q.x() / 3.0_f64.sqrt()).abs() < 1e-12);
     let top = e.eval(1.0, 0.1);
-    assert!((top.z - 2.0).abs() < 1e-12 && (top.xy().norm() - 1.0).abs() < 1e-12);
+    assert!((top.z() - 2.0).abs() < 1e-12 && (top.xy().norm() - 1.0).abs() < 1e-12);
     let du = e.eval_du(1.0, 0.3, 1);
     assert!((du - bez_core::Vector3::new(0.0, 0.0, 2.0)).norm() < 1e-12);
     // The biharmonic-type equation in the separated form: A'''' − 2A'' + A = 0 by differences.
     let h = 1e-2;
-    let a = |u: f64| e.eval(u, 0.0).x;
+    let a = |u: f64| e.eval(u, 0.0).x();
     let u = 0.5;
     let d4 = (a(u + 2.0 * h) - 4.0 * a(u + h) + 6.0 * a(u) - 4.0 * a(u - h) + a(u - 2.0 * h))
         / h.powi(4);

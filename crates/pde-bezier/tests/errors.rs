@@ -5,7 +5,7 @@
 use bez_core::{BezierCurve, BezierSurface, Vector3};
 use pde_bezier::{Discretization, Error, Method, Operator, Problem, Side, SideCurve, Term, solve};
 
-fn line(a: Vector3<f64>, b: Vector3<f64>) -> SideCurve {
+fn line(a: Vector3, b: Vector3) -> SideCurve {
     SideCurve::Bezier(BezierCurve::new(vec![a, b]).unwrap())
 }
 

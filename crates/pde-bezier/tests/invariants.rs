@@ -26,7 +26,7 @@ fn dirichlet(x: &BezierSurface<3>, op: Operator) -> Problem {
     }
 }
 
-fn translate(side: &Side, t: Vector3<f64>) -> Side {
+fn translate(side: &Side, t: Vector3) -> Side {
     match side {
         Side::Fixed(curves) => Side::Fixed(
             curves

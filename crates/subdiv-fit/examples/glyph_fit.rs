@@ -23,17 +23,17 @@ use subdiv_fit::{FitOptions, Vector2, fit, svg_path};
 struct Sampler {
     step: f64,
     scale: f64,
-    contours: Vec<Vec<Vector2<f64>>>,
-    current: Vec<Vector2<f64>>,
-    last: Vector2<f64>,
+    contours: Vec<Vec<Vector2>>,
+    current: Vec<Vector2>,
+    last: Vector2,
 }
 
 impl Sampler {
-    fn pt(&self, x: f32, y: f32) -> Vector2<f64> {
+    fn pt(&self, x: f32, y: f32) -> Vector2 {
         Vector2::new(f64::from(x) * self.scale, f64::from(y) * self.scale)
     }
 
-    fn push_curve(&mut self, end: Vector2<f64>, f: impl Fn(f64) -> Vector2<f64>, len: f64) {
+    fn push_curve(&mut self, end: Vector2, f: impl Fn(f64) -> Vector2, len: f64) {
         let n = ((len / self.step).ceil() as usize).max(1);
         for k in 1..n {
             self.current.push(f(k as f64 / n as f64));
@@ -140,7 +140,10 @@ fn run() -> Result<(), Box<dyn std::error::Error>> {
             .map_or(0.8, |a| f64::from(a) * scale);
         let _ = writeln!(svg_body, "<g transform=\"translate({dx} 0)\">");
         for (k, data) in s.contours.iter().enumerate() {
-            let poly: Vec<String> = data.iter().map(|p| format!("{},{}", p.x, p.y)).collect();
+            let poly: Vec<String> = data
+                .iter()
+                .map(|p| format!("{},{}", p.x(), p.y()))
+                .collect();
             let _ = writeln!(
                 svg_body,
                 "<polygon points=\"{}\" fill=\"none\" stroke=\"#999\" stroke-width=\"0.004\"/>",

@@ -1,6 +1,6 @@
 //! The uniform cubic B-spline basis on one segment.
 
-use bez_core::SVector;
+use bez_core::Vector;
 
 /// `B(u) = ((1−u)³, 3u³ − 6u² + 4, −3u³ + 3u² + 3u + 1, u³) / 6`, the uniform cubic B-spline
 /// basis of eq. (1) on `u ∈ [0, 1]`; the segment runs between the 2nd and 3rd control points.
@@ -34,7 +34,7 @@ pub fn bspline_basis_d2(u: f64) -> [f64; 4] {
 
 /// Exact conversion of one uniform cubic B-spline segment `(a, b, c, d)` to Bézier form:
 /// `((a + 4b + c)/6, (2b + c)/3, (b + 2c)/3, (b + 4c + d)/6)`.
-pub fn bspline_to_bezier<const D: usize>(ctrl: &[SVector<f64, D>; 4]) -> [SVector<f64, D>; 4] {
+pub fn bspline_to_bezier<const D: usize>(ctrl: &[Vector<D>; 4]) -> [Vector<D>; 4] {
     let [a, b, c, d] = *ctrl;
     [
         (a + 4.0 * b + c) / 6.0,

@@ -1,6 +1,6 @@
 //! Discrete curvature and the initial fitting points (Sec. 4.2).
 
-use bez_core::SVector;
+use bez_core::Vector;
 
 /// A data point chosen as an initial fitting point.
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -16,7 +16,7 @@ pub struct FeaturePoint {
 
 /// Angle between the unit vectors `a/|a|` and `b/|b|`, accurate for small and large angles
 /// (`2 atan2(|â − b̂|, |â + b̂|)`).
-fn angle_between<const D: usize>(a: &SVector<f64, D>, b: &SVector<f64, D>) -> f64 {
+fn angle_between<const D: usize>(a: &Vector<D>, b: &Vector<D>) -> f64 {
     let (na, nb) = (a.norm(), b.norm());
     if na == 0.0 || nb == 0.0 {
         return 0.0;
@@ -38,7 +38,7 @@ fn neighbours(n: usize, i: usize, closed: bool) -> Option<(usize, usize)> {
 /// The turning angle `φ_i ∈ [0, π]` between `v_{i−1}v_i` and `v_i v_{i+1}` at every data point
 /// (`π` at the ends of open data). The angle between the two edges *at* the point, which the
 /// paper thresholds (Sec. 4.1), is `π − φ_i`.
-pub fn turning_angle<const D: usize>(data: &[SVector<f64, D>], closed: bool) -> Vec<f64> {
+pub fn turning_angle<const D: usize>(data: &[Vector<D>], closed: bool) -> Vec<f64> {
     let n = data.len();
     (0..n)
         .map(|i| match neighbours(n, i, closed) {
@@ -51,7 +51,7 @@ pub fn turning_angle<const D: usize>(data: &[SVector<f64, D>], closed: bool) -> 
 /// Discrete curvature (Sec. 4.2): `K(v_i) = 2 sin φ_i / d_i`, the inverse radius of the circle
 /// through `v_{i−1}, v_i, v_{i+1}`, with `φ_i` the turning angle and `d_i = |v_{i+1} − v_{i−1}|`.
 /// Infinite at the ends of open data ("a large curvature value", Sec. 4.2).
-pub fn discrete_curvature<const D: usize>(data: &[SVector<f64, D>], closed: bool) -> Vec<f64> {
+pub fn discrete_curvature<const D: usize>(data: &[Vector<D>], closed: bool) -> Vec<f64> {
     let n = data.len();
     let phi = turning_angle(data, closed);
     (0..n)
@@ -79,7 +79,7 @@ pub fn discrete_curvature<const D: usize>(data: &[SVector<f64, D>], closed: bool
 ///   `L` the diagonal of the data's bounding box (so straight runs, whose discrete curvature is
 ///   rounding noise, yield none).
 pub fn feature_points<const D: usize>(
-    data: &[SVector<f64, D>],
+    data: &[Vector<D>],
     closed: bool,
     sharp_angle: f64,
     curvature_floor: f64,
@@ -113,7 +113,7 @@ pub fn feature_points<const D: usize>(
 }
 
 /// Diagonal of the axis-aligned bounding box.
-pub(crate) fn diagonal<const D: usize>(data: &[SVector<f64, D>]) -> f64 {
+pub(crate) fn diagonal<const D: usize>(data: &[Vector<D>]) -> f64 {
     let Some(first) = data.first() else {
         return 0.0;
     };

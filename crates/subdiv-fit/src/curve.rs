@@ -1,7 +1,7 @@
 //! Cubic B-spline subdivision curves with sharp vertices (Sec. 2.1) and their exact
 //! evaluation (Sec. 2.2).
 
-use bez_core::{BezierCurve, SVector};
+use bez_core::{BezierCurve, Vector};
 
 use crate::SubdivFitError;
 use crate::bspline::{bspline_basis, bspline_basis_d1, bspline_basis_d2, bspline_to_bezier};
@@ -15,7 +15,7 @@ use crate::bspline::{bspline_basis, bspline_basis_d1, bspline_basis_d2, bspline_
 #[derive(Debug, Clone, PartialEq)]
 #[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 pub struct SubdivCurve<const D: usize> {
-    points: Vec<SVector<f64, D>>,
+    points: Vec<Vector<D>>,
     sharp: Vec<bool>,
     closed: bool,
 }
@@ -24,11 +24,11 @@ pub struct SubdivCurve<const D: usize> {
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct CurvePoint<const D: usize> {
     /// Position C.
-    pub position: SVector<f64, D>,
+    pub position: Vector<D>,
     /// First derivative C' with respect to the parameter.
-    pub first: SVector<f64, D>,
+    pub first: Vector<D>,
     /// Second derivative C'' with respect to the parameter.
-    pub second: SVector<f64, D>,
+    pub second: Vector<D>,
 }
 
 impl<const D: usize> SubdivCurve<D> {
@@ -41,7 +41,7 @@ impl<const D: usize> SubdivCurve<D> {
     /// [`SubdivFitError::TooFewPoints`], [`SubdivFitError::NonFinite`],
     /// [`SubdivFitError::FlagCount`].
     pub fn new(
-        points: Vec<SVector<f64, D>>,
+        points: Vec<Vector<D>>,
         mut sharp: Vec<bool>,
         closed: bool,
     ) -> Result<Self, SubdivFitError> {
@@ -77,13 +77,13 @@ impl<const D: usize> SubdivCurve<D> {
     ///
     /// # Errors
     /// As [`SubdivCurve::new`].
-    pub fn smooth(points: Vec<SVector<f64, D>>, closed: bool) -> Result<Self, SubdivFitError> {
+    pub fn smooth(points: Vec<Vector<D>>, closed: bool) -> Result<Self, SubdivFitError> {
         let n = points.len();
         Self::new(points, vec![false; n], closed)
     }
 
     /// The control points.
-    pub fn points(&self) -> &[SVector<f64, D>] {
+    pub fn points(&self) -> &[Vector<D>] {
         &self.points
     }
 
@@ -153,7 +153,7 @@ impl<const D: usize> SubdivCurve<D> {
     ///
     /// # Errors
     /// [`SubdivFitError::SegmentOutOfRange`] if `i` is not a vertex.
-    pub fn limit_position(&self, i: usize) -> Result<SVector<f64, D>, SubdivFitError> {
+    pub fn limit_position(&self, i: usize) -> Result<Vector<D>, SubdivFitError> {
         let n = self.points.len();
         if i >= n {
             return Err(SubdivFitError::SegmentOutOfRange { index: i, count: n });
@@ -175,7 +175,7 @@ impl<const D: usize> SubdivCurve<D> {
     ///
     /// # Errors
     /// [`SubdivFitError::SegmentOutOfRange`].
-    pub fn segment_controls(&self, i: usize) -> Result<[SVector<f64, D>; 4], SubdivFitError> {
+    pub fn segment_controls(&self, i: usize) -> Result<[Vector<D>; 4], SubdivFitError> {
         let count = self.segment_count();
         if i >= count {
             return Err(SubdivFitError::SegmentOutOfRange { index: i, count });
@@ -200,7 +200,7 @@ impl<const D: usize> SubdivCurve<D> {
     ///
     /// # Errors
     /// [`SubdivFitError::SegmentOutOfRange`], [`SubdivFitError::ParameterOutOfRange`].
-    pub fn eval_segment(&self, i: usize, u: f64) -> Result<SVector<f64, D>, SubdivFitError> {
+    pub fn eval_segment(&self, i: usize, u: f64) -> Result<Vector<D>, SubdivFitError> {
         let ctrl = self.segment_controls(i)?;
         check_unit(u)?;
         Ok(combine(&ctrl, bspline_basis(u)))
@@ -249,7 +249,7 @@ impl<const D: usize> SubdivCurve<D> {
     ///
     /// # Errors
     /// [`SubdivFitError::ParameterOutOfRange`].
-    pub fn eval(&self, s: f64) -> Result<SVector<f64, D>, SubdivFitError> {
+    pub fn eval(&self, s: f64) -> Result<Vector<D>, SubdivFitError> {
         let (i, u) = self.locate(s)?;
         self.eval_segment(i, u)
     }
@@ -271,11 +271,11 @@ impl<const D: usize> SubdivCurve<D> {
     pub fn eval_many(
         &self,
         params: &[f64],
-        out: &mut Vec<SVector<f64, D>>,
+        out: &mut Vec<Vector<D>>,
     ) -> Result<(), SubdivFitError> {
         out.clear();
         out.reserve(params.len());
-        let mut cached: Option<(usize, [SVector<f64, D>; 4])> = None;
+        let mut cached: Option<(usize, [Vector<D>; 4])> = None;
         for &s in params {
             let (i, u) = self.locate(s)?;
             let ctrl = match cached {
@@ -324,6 +324,6 @@ fn check_unit(u: f64) -> Result<(), SubdivFitError> {
     }
 }
 
-pub(crate) fn combine<const D: usize>(ctrl: &[SVector<f64, D>; 4], w: [f64; 4]) -> SVector<f64, D> {
+pub(crate) fn combine<const D: usize>(ctrl: &[Vector<D>; 4], w: [f64; 4]) -> Vector<D> {
     ctrl[0] * w[0] + ctrl[1] * w[1] + ctrl[2] * w[2] + ctrl[3] * w[3]
 }

@@ -1,6 +1,6 @@
 //! Foot points on one segment (eq. 6) and distances to a polyline.
 
-use bez_core::SVector;
+use bez_core::Vector;
 
 use crate::bspline::{bspline_basis, bspline_basis_d1, bspline_basis_d2};
 use crate::curve::combine;
@@ -17,7 +17,7 @@ use crate::{SubdivCurve, SubdivFitError};
 pub fn foot_point<const D: usize>(
     curve: &SubdivCurve<D>,
     segment: usize,
-    v: &SVector<f64, D>,
+    v: &Vector<D>,
     t0: f64,
 ) -> Result<(f64, f64), SubdivFitError> {
     if !(0.0..=1.0).contains(&t0) {
@@ -33,8 +33,8 @@ pub fn foot_point<const D: usize>(
 }
 
 pub(crate) fn foot_point_ctrl<const D: usize>(
-    ctrl: &[SVector<f64, D>; 4],
-    v: &SVector<f64, D>,
+    ctrl: &[Vector<D>; 4],
+    v: &Vector<D>,
     t0: f64,
 ) -> (f64, f64) {
     let mut t = t0;
@@ -66,10 +66,7 @@ pub(crate) fn foot_point_ctrl<const D: usize>(
 
 /// Distance from `p` to the polyline through `poly` (to its vertex if it has one point;
 /// infinite if empty).
-pub fn point_polyline_distance<const D: usize>(
-    p: &SVector<f64, D>,
-    poly: &[SVector<f64, D>],
-) -> f64 {
+pub fn point_polyline_distance<const D: usize>(p: &Vector<D>, poly: &[Vector<D>]) -> f64 {
     match poly {
         [] => f64::INFINITY,
         [q] => (p - q).norm(),

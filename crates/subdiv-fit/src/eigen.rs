@@ -14,7 +14,7 @@
 //! The collapsed form in [`crate::SubdivCurve::segment_controls`] equals this for every `u`;
 //! the tests check the identity.
 
-use bez_core::SVector;
+use bez_core::Vector;
 use nalgebra::{Matrix3, Matrix4x3, RowVector4};
 
 use crate::SubdivFitError;
@@ -69,9 +69,9 @@ pub fn level_of(u: f64) -> (i32, f64) {
 /// # Errors
 /// [`SubdivFitError::ParameterOutOfRange`] if `u ∉ [0, 1]`.
 pub fn eval_sharp_segment_eigen<const D: usize>(
-    p: &[SVector<f64, D>; 3],
+    p: &[Vector<D>; 3],
     u: f64,
-) -> Result<SVector<f64, D>, SubdivFitError> {
+) -> Result<Vector<D>, SubdivFitError> {
     if !(0.0..=1.0).contains(&u) {
         return Err(SubdivFitError::ParameterOutOfRange {
             name: "u",
@@ -86,7 +86,7 @@ pub fn eval_sharp_segment_eigen<const D: usize>(
     let (k, t) = level_of(u);
     let x = eigen_basis(t);
     let ui = eigenvectors_inverse();
-    let mut out = SVector::<f64, D>::zeros();
+    let mut out = Vector::<D>::zeros();
     for l in 0..3 {
         let c = p[0] * ui[(l, 0)] + p[1] * ui[(l, 1)] + p[2] * ui[(l, 2)];
         out += c * (x[l] * EIGENVALUES[l].powi(k));

@@ -2,7 +2,7 @@
 //! (eq. 4), per-segment errors (eqs. 5–6), and insertion of fitting points until the error is
 //! within tolerance.
 
-use bez_core::SVector;
+use bez_core::Vector;
 
 use crate::banded::CyclicBand;
 use crate::bspline::bspline_basis;
@@ -146,7 +146,7 @@ impl<const D: usize> Fit<D> {
 }
 
 /// Validates data: finite, no coinciding consecutive points, enough points.
-fn validate<const D: usize>(data: &[SVector<f64, D>], closed: bool) -> Result<(), SubdivFitError> {
+fn validate<const D: usize>(data: &[Vector<D>], closed: bool) -> Result<(), SubdivFitError> {
     let needed = 3;
     if data.len() < needed {
         return Err(SubdivFitError::TooFewPoints {
@@ -228,7 +228,7 @@ fn validate_options(o: &FitOptions) -> Result<(), SubdivFitError> {
 /// Invalid data or options (typed), [`SubdivFitError::SingularSystem`],
 /// [`SubdivFitError::NoConvergence`] when the round cap is hit or no segment can take another point.
 pub fn fit<const D: usize>(
-    data: &[SVector<f64, D>],
+    data: &[Vector<D>],
     closed: bool,
     options: &FitOptions,
 ) -> Result<Fit<D>, SubdivFitError> {
@@ -323,7 +323,7 @@ fn split_largest_gap(fitting: &mut Vec<(usize, bool)>, n: usize) {
 
 /// Solves eq. (4) (and, in least-squares mode, the least-squares refinement).
 fn solve_curve<const D: usize>(
-    data: &[SVector<f64, D>],
+    data: &[Vector<D>],
     fitting: &[(usize, bool)],
     closed: bool,
     mode: FitMode,
@@ -349,7 +349,7 @@ fn solve_curve<const D: usize>(
     }
     let p = solve_tridiagonal(&lower, &diag, &upper, &q, closed)
         .ok_or(SubdivFitError::SingularSystem { size: k })?;
-    let points: Vec<SVector<f64, D>> = p.into_iter().map(SVector::<f64, D>::from).collect();
+    let points: Vec<Vector<D>> = p.into_iter().map(Vector::<D>::from).collect();
     let curve = SubdivCurve::new(points, sharp, closed)?;
     match mode {
         FitMode::Interpolate => Ok(curve),
@@ -385,7 +385,7 @@ fn segment_weights(sharp: &[bool], j: usize, w: [f64; 4]) -> [(usize, f64); 6] {
 /// One least-squares solve: foot-point parameters from `curve`, then the regular control points
 /// minimizing Σ |C(t_i) − v_i|² with the sharp ones fixed.
 fn least_squares<const D: usize>(
-    data: &[SVector<f64, D>],
+    data: &[Vector<D>],
     fitting: &[(usize, bool)],
     curve: &SubdivCurve<D>,
 ) -> Result<SubdivCurve<D>, SubdivFitError> {
@@ -446,7 +446,7 @@ fn least_squares<const D: usize>(
     let mut points = curve.points().to_vec();
     for (i, slot) in unknown.iter().enumerate() {
         if let Some(col) = slot {
-            points[i] = SVector::<f64, D>::from(sol[*col]);
+            points[i] = Vector::<D>::from(sol[*col]);
         }
     }
     if !points.iter().all(|p| p.iter().all(|c| c.is_finite())) {
@@ -456,7 +456,7 @@ fn least_squares<const D: usize>(
 }
 
 /// Chord-length parameters of data a..=b (indices mod n), the paper's Newton start (Sec. 5).
-fn chord_params<const D: usize>(data: &[SVector<f64, D>], a: usize, b: usize) -> Vec<f64> {
+fn chord_params<const D: usize>(data: &[Vector<D>], a: usize, b: usize) -> Vec<f64> {
     let n = data.len();
     let mut acc = Vec::with_capacity(b - a + 1);
     let mut s = 0.0;
@@ -481,7 +481,7 @@ struct Assessment {
 }
 
 fn assess<const D: usize>(
-    data: &[SVector<f64, D>],
+    data: &[Vector<D>],
     fitting: &[(usize, bool)],
     curve: &SubdivCurve<D>,
     closed: bool,
@@ -492,7 +492,7 @@ fn assess<const D: usize>(
     let (mut max_d2c, mut sum2, mut count, mut max_c2d) = (0.0_f64, 0.0, 0usize, 0.0_f64);
     let mut verdicts = Vec::new();
     let segs = curve.segment_count();
-    let mut poly: Vec<SVector<f64, D>> = Vec::new();
+    let mut poly: Vec<Vector<D>> = Vec::new();
     for j in 0..segs {
         let (a, b) = segment_range(fitting, j, n);
         let Ok(ctrl) = curve.segment_controls(j) else {

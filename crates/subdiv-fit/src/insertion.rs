@@ -1,7 +1,7 @@
 //! Where new fitting points go. Sec. 4.3 only says "insert new fitting points where the error is not
 //! met"; the rules here are the project's (see [`crate::Insertion`]).
 
-use bez_core::SVector;
+use bez_core::Vector;
 
 use crate::fit::Insertion;
 
@@ -14,7 +14,7 @@ pub(crate) struct ChordLengths {
 }
 
 impl ChordLengths {
-    pub(crate) fn new<const D: usize>(data: &[SVector<f64, D>], closed: bool) -> Self {
+    pub(crate) fn new<const D: usize>(data: &[Vector<D>], closed: bool) -> Self {
         let n = data.len();
         let mut cum = Vec::with_capacity(n);
         let mut s = 0.0;
@@ -166,7 +166,7 @@ mod tests {
             span in 0usize..40,
         ) {
             let mut x = 0.0;
-            let data: Vec<Vector2<f64>> = steps
+            let data: Vec<Vector2> = steps
                 .iter()
                 .map(|s| {
                     x += s;

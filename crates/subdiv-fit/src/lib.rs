@@ -67,7 +67,7 @@ mod segment;
 mod svg;
 mod tridiagonal;
 
-pub use bez_core::{SVector, Vector2, Vector3};
+pub use bez_core::{Vector, Vector2, Vector3};
 pub use bspline::{bspline_basis, bspline_basis_d1, bspline_basis_d2, bspline_to_bezier};
 pub use curvature::{FeaturePoint, discrete_curvature, feature_points, turning_angle};
 pub use curve::{CurvePoint, SubdivCurve};

@@ -1,6 +1,6 @@
 //! One segment of a subdivision curve as a value with its exact cubic Bézier form.
 
-use bez_core::{BezierCurve, BezierForm, SVector};
+use bez_core::{BezierCurve, BezierForm, Vector};
 
 use crate::SubdivFitError;
 use crate::curve::SubdivCurve;
@@ -36,7 +36,7 @@ use crate::curve::SubdivCurve;
 #[derive(Debug, Clone, PartialEq)]
 pub struct Segment<const D: usize> {
     index: usize,
-    controls: [SVector<f64, D>; 4],
+    controls: [Vector<D>; 4],
     bezier: BezierCurve<D>,
 }
 
@@ -49,7 +49,7 @@ impl<const D: usize> Segment<D> {
 
     /// The four uniform cubic B-spline control points (phantom points at sharp vertices).
     #[must_use]
-    pub fn controls(&self) -> &[SVector<f64, D>; 4] {
+    pub fn controls(&self) -> &[Vector<D>; 4] {
         &self.controls
     }
 

@@ -12,7 +12,7 @@ use crate::{SubdivCurve, SubdivFitError};
 pub fn svg_path<const D: usize>(curve: &SubdivCurve<D>) -> Result<String, SubdivFitError> {
     let beziers = curve.to_beziers()?;
     let mut s = String::new();
-    let xy = |p: &bez_core::SVector<f64, D>| (p[0], if D > 1 { p[1] } else { 0.0 });
+    let xy = |p: &bez_core::Vector<D>| (p[0], if D > 1 { p[1] } else { 0.0 });
     for (i, b) in beziers.iter().enumerate() {
         let pts = b.points();
         if i == 0 {

@@ -36,7 +36,7 @@ fn segments_match_the_bspline_evaluation_through_the_trait() {
 
 #[test]
 fn open_spatial_segments_match_through_the_trait() {
-    let polygon: Vec<Vector3<f64>> = (0..5)
+    let polygon: Vec<Vector3> = (0..5)
         .map(|i| {
             let a = f64::from(i);
             Vector3::new(a, (0.8 * a).sin(), 0.2 * a * a)

@@ -5,16 +5,16 @@ use subdiv_fit::eigen::{
     EIGENVALUES, eigenvectors, eigenvectors_inverse, eval_sharp_segment_eigen,
     extended_sharp_matrix, sharp_matrix,
 };
-use subdiv_fit::{SVector, SubdivCurve, SubdivFitError, Vector2, Vector3};
+use subdiv_fit::{SubdivCurve, SubdivFitError, Vector, Vector2, Vector3};
 
 fn polygon<const D: usize>(
     min: usize,
     max: usize,
-) -> impl Strategy<Value = (Vec<SVector<f64, D>>, Vec<bool>, bool)> {
+) -> impl Strategy<Value = (Vec<Vector<D>>, Vec<bool>, bool)> {
     (min..=max).prop_flat_map(|n| {
         (
             prop::collection::vec(
-                prop::array::uniform::<_, D>(-10.0..10.0f64).prop_map(SVector::from),
+                prop::array::uniform::<_, D>(-10.0..10.0f64).prop_map(Vector::from),
                 n,
             ),
             prop::collection::vec(any::<bool>(), n),
@@ -154,7 +154,7 @@ fn eigen_decomposition_identities() {
     let a = sharp_matrix();
     let u = eigenvectors();
     let ui = eigenvectors_inverse();
-    let d = nalgebra::Matrix3::from_diagonal(&Vector3::from(EIGENVALUES));
+    let d = nalgebra::Matrix3::from_diagonal(&nalgebra::Vector3::from(EIGENVALUES));
     assert!((u * ui - nalgebra::Matrix3::identity()).norm() == 0.0);
     assert!((a * u - u * d).norm() == 0.0);
     assert!((u * d * ui - a).norm() == 0.0);

@@ -7,7 +7,7 @@ use subdiv_fit::{
 };
 
 #[allow(clippy::unwrap_used, reason = "test helper")]
-fn all_within(data: &[Vector2<f64>], fitted: &subdiv_fit::Fit<2>, tol: f64) {
+fn all_within(data: &[Vector2], fitted: &subdiv_fit::Fit<2>, tol: f64) {
     // Independent check: every data point against dense samples of the whole curve.
     let c = &fitted.curve;
     let mut samples = Vec::new();
@@ -39,7 +39,7 @@ fn recovers_data_sampled_from_a_subdivision_curve() {
         SubdivCurve::new(ctrl, vec![false, false, true, false, false, false], true).unwrap();
     let per = 24;
     let count = truth.segment_count() * per;
-    let data: Vec<Vector2<f64>> = (0..count)
+    let data: Vec<Vector2> = (0..count)
         .map(|k| truth.eval(k as f64 / per as f64).unwrap())
         .collect();
     let tol = 1e-3;
@@ -103,7 +103,7 @@ fn test_shapes_converge_with_corners_sharp() {
 fn discrete_curvature_is_inverse_circumradius() {
     // Three points on a circle of radius 2.
     let r = 2.0;
-    let pts: Vec<Vector2<f64>> = [0.3_f64, 1.0, 2.2]
+    let pts: Vec<Vector2> = [0.3_f64, 1.0, 2.2]
         .iter()
         .map(|t| Vector2::new(r * t.cos(), r * t.sin()))
         .collect();
@@ -118,12 +118,12 @@ fn discrete_curvature_is_inverse_circumradius() {
 #[test]
 fn float_noise_on_straight_runs_and_arcs_makes_no_maxima() {
     // A straight run with rounding-level noise and a circle: no interior features.
-    let line: Vec<Vector2<f64>> = (0..50)
+    let line: Vec<Vector2> = (0..50)
         .map(|i| Vector2::new(0.1 * i as f64, 0.1 * i as f64 * (1.0 / 3.0)))
         .collect();
     let f = feature_points(&line, false, 140f64.to_radians(), 1e-6, 1e-9);
     assert_eq!(f.iter().map(|p| p.index).collect::<Vec<_>>(), vec![0, 49]);
-    let circle: Vec<Vector2<f64>> = (0..40)
+    let circle: Vec<Vector2> = (0..40)
         .map(|i| {
             let t = std::f64::consts::TAU * i as f64 / 40.0 + 0.1;
             Vector2::new(t.cos(), t.sin())
@@ -179,7 +179,7 @@ fn bad_input_gives_typed_errors() {
         Err(SubdivFitError::TooFewPoints { got: 2, .. })
     ));
     let mut nan = ok.clone();
-    nan[5].x = f64::NAN;
+    nan[5][0] = f64::NAN;
     assert!(matches!(
         fit(&nan, true, &o),
         Err(SubdivFitError::NonFinite { index: 5 })
@@ -240,7 +240,7 @@ fn bisection_beats_max_error_insertion() {
 /// Both measures within tolerance, the independent dense check, corners sharp, and well inside the
 /// round cap (bisection needs about log2 of the longest failing segment).
 #[allow(clippy::unwrap_used, reason = "test helper")]
-fn converges_cleanly(data: &[Vector2<f64>], mode: FitMode, max_rounds: usize) {
+fn converges_cleanly(data: &[Vector2], mode: FitMode, max_rounds: usize) {
     let tol = 0.01;
     let opts = FitOptions {
         mode,
@@ -308,13 +308,13 @@ fn rippled_family_converges() {
 #[test]
 fn fits_space_curves() {
     // The closed test shape lifted onto a wavy band in 3D: corners stay corners.
-    let data: Vec<Vector3<f64>> = closed_petals(1)
+    let data: Vec<Vector3> = closed_petals(1)
         .iter()
         .enumerate()
         .map(|(i, p)| {
             Vector3::new(
-                p.x,
-                p.y,
+                p.x(),
+                p.y(),
                 0.2 * (std::f64::consts::TAU * i as f64 / 64.0).sin(),
             )
         })

@@ -33,7 +33,7 @@ pub(crate) fn figures(dir: &Path) -> Result<Vec<PathBuf>, DynError> {
         Vector2::new(6.0, 1.0),
     ])?;
     let (left, right) = curve.split(0.4)?;
-    let xy = |p: &[Vector2<f64>]| p.iter().map(|q| (q.x, q.y)).collect::<Vec<_>>();
+    let xy = |p: &[Vector2]| p.iter().map(|q| (q.x(), q.y())).collect::<Vec<_>>();
     let split = Plot::new("de Casteljau subdivision at t = 0.4", "x", "y")
         .equal()
         .with(Series::new(

@@ -29,7 +29,7 @@ pub(crate) fn tables() -> Result<Vec<Table>, DynError> {
 /// tolerance) into a buffer (cleared first, its capacity reused).
 type Method = (
     &'static str,
-    fn(&BezierCurve<2>, f64, &mut Vec<Vector2<f64>>) -> Result<(), DynError>,
+    fn(&BezierCurve<2>, f64, &mut Vec<Vector2>) -> Result<(), DynError>,
 );
 
 /// Index of kurbo's `flatten` in [`methods`], the reference of the ratio column.
@@ -48,7 +48,7 @@ fn methods() -> [Method; 6] {
         ),
         ("bezkit fixed rule, eq. (3) piece chords", fixed_chords),
         ("bezkit guaranteed", guaranteed),
-        ("kurbo 0.11 `flatten`", kurbo_flatten),
+        ("kurbo 0.13 `flatten`", kurbo_flatten),
         ("lyon_geom 1 `for_each_flattened`", lyon_flatten),
         (
             "bezkit fixed rule, eq. (3) control polygons, loosest ε with error ≤ tol",
@@ -77,18 +77,14 @@ fn tolerances(c: &BezierCurve<2>, methods: &[Method]) -> Result<Vec<f64>, DynErr
 }
 
 /// `flatten_fixed_into`'s output: the control polygons of the final pieces.
-fn fixed_polygons(
-    c: &BezierCurve<2>,
-    tol: f64,
-    out: &mut Vec<Vector2<f64>>,
-) -> Result<(), DynError> {
+fn fixed_polygons(c: &BezierCurve<2>, tol: f64, out: &mut Vec<Vector2>) -> Result<(), DynError> {
     bez_subdiv::flatten_fixed_into(c, tol / bez_subdiv::curve_size(c), 40, out)?;
     Ok(())
 }
 
 /// The end points of the same pieces: every n-th point of the control polygons, compacted in
 /// place after `flatten_fixed_into` (its time includes that pass).
-fn fixed_chords(c: &BezierCurve<2>, tol: f64, out: &mut Vec<Vector2<f64>>) -> Result<(), DynError> {
+fn fixed_chords(c: &BezierCurve<2>, tol: f64, out: &mut Vec<Vector2>) -> Result<(), DynError> {
     fixed_polygons(c, tol, out)?;
     let step = c.points().len() - 1;
     let kept = out.len().div_ceil(step);
@@ -99,35 +95,29 @@ fn fixed_chords(c: &BezierCurve<2>, tol: f64, out: &mut Vec<Vector2<f64>>) -> Re
     Ok(())
 }
 
-fn guaranteed(c: &BezierCurve<2>, tol: f64, out: &mut Vec<Vector2<f64>>) -> Result<(), DynError> {
+fn guaranteed(c: &BezierCurve<2>, tol: f64, out: &mut Vec<Vector2>) -> Result<(), DynError> {
     let pts = bez_subdiv::flatten_guaranteed(c, tol, 40)?;
     out.clear();
     out.extend(pts.into_iter().map(|p| p.point));
     Ok(())
 }
 
-fn kurbo_flatten(
-    c: &BezierCurve<2>,
-    tol: f64,
-    out: &mut Vec<Vector2<f64>>,
-) -> Result<(), DynError> {
-    use kurbo::{BezPath, PathEl, Point};
-    let p: Vec<Point> = c.points().iter().map(|q| Point::new(q.x, q.y)).collect();
-    let [p0, p1, p2, p3] = p[..] else {
-        return Err("kurbo's flatten is run on cubics only".into());
-    };
+fn kurbo_flatten(c: &BezierCurve<2>, tol: f64, out: &mut Vec<Vector2>) -> Result<(), DynError> {
+    use kurbo::{BezPath, CubicBez, PathEl};
+    // kurbo's flatten is run on cubics only: another degree is an error.
+    let CubicBez { p0, p1, p2, p3 } = CubicBez::try_from(c)?;
     let path = BezPath::from_vec(vec![PathEl::MoveTo(p0), PathEl::CurveTo(p1, p2, p3)]);
     out.clear();
     kurbo::flatten(&path, tol, |el| match el {
-        PathEl::MoveTo(q) | PathEl::LineTo(q) => out.push(Vector2::new(q.x, q.y)),
+        PathEl::MoveTo(q) | PathEl::LineTo(q) => out.push(q.into()),
         _ => {}
     });
     Ok(())
 }
 
-fn lyon_flatten(c: &BezierCurve<2>, tol: f64, out: &mut Vec<Vector2<f64>>) -> Result<(), DynError> {
+fn lyon_flatten(c: &BezierCurve<2>, tol: f64, out: &mut Vec<Vector2>) -> Result<(), DynError> {
     use lyon_geom::{CubicBezierSegment, point};
-    let p: Vec<_> = c.points().iter().map(|q| point(q.x, q.y)).collect();
+    let p: Vec<_> = c.points().iter().map(|q| point(q.x(), q.y())).collect();
     let [from, ctrl1, ctrl2, to] = p[..] else {
         return Err("lyon_geom's cubic flattening is run on cubics only".into());
     };

@@ -25,7 +25,7 @@ const ROUND_MICROS: f64 = 2000.0;
 /// A mode: its name and a function from (curve, absolute tolerance) to its output points.
 type Mode = (
     String,
-    Box<dyn Fn(&BezierCurve<2>, f64, &mut Vec<Vector2<f64>>) -> Result<(), DynError>>,
+    Box<dyn Fn(&BezierCurve<2>, f64, &mut Vec<Vector2>) -> Result<(), DynError>>,
 );
 
 /// The allocation-free fixed rule, Table 1's rules through the general `flatten`, and the modes
@@ -64,12 +64,12 @@ fn modes() -> Vec<Mode> {
     modes
 }
 
-fn fixed(c: &BezierCurve<2>, tol: f64, out: &mut Vec<Vector2<f64>>) -> Result<(), DynError> {
+fn fixed(c: &BezierCurve<2>, tol: f64, out: &mut Vec<Vector2>) -> Result<(), DynError> {
     bez_subdiv::flatten_fixed_into(c, tol / bez_subdiv::curve_size(c), 40, out)?;
     Ok(())
 }
 
-fn points(flat: Vec<bez_subdiv::FlatPoint>, out: &mut Vec<Vector2<f64>>) -> Result<(), DynError> {
+fn points(flat: Vec<bez_subdiv::FlatPoint>, out: &mut Vec<Vector2>) -> Result<(), DynError> {
     out.clear();
     out.extend(flat.into_iter().map(|p| p.point));
     Ok(())

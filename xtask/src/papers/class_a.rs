@@ -170,8 +170,8 @@ fn counterexample_table() -> Result<Table, DynError> {
             m[(0, 1)],
             m[(1, 0)],
             m[(1, 1)],
-            v.x,
-            v.y
+            v.x(),
+            v.y()
         )?;
     }
     Ok(Table {

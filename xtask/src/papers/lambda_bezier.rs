@@ -20,8 +20,8 @@ use crate::tables::Table;
 
 type Xy = Vec<(f64, f64)>;
 
-fn xy(points: &[Vector2<f64>]) -> Xy {
-    points.iter().map(|p| (p.x, p.y)).collect()
+fn xy(points: &[Vector2]) -> Xy {
+    points.iter().map(|p| (p.x(), p.y())).collect()
 }
 
 fn polyline(curves: &[LambdaBezierCurve<2>], per_curve: usize) -> Xy {
@@ -80,7 +80,7 @@ pub(crate) fn figures(dir: &Path) -> Result<Vec<PathBuf>, DynError> {
     let data = akima_data();
     for (sub, lambdas) in ["a", "b"].iter().zip(AKIMA_LAMBDAS.iter()) {
         let curves = shape_preserving_curves(&data, lambdas)?;
-        let mut polygon: Vec<Vector2<f64>> = Vec::new();
+        let mut polygon: Vec<Vector2> = Vec::new();
         for c in &curves {
             polygon.extend_from_slice(&c.points()[..2]);
         }

@@ -289,16 +289,12 @@ pub(crate) fn figures(dir: &Path) -> Result<Vec<PathBuf>, DynError> {
 }
 
 /// Isometric-style projection of a point.
-fn project(p: Vector3<f64>) -> (f64, f64) {
+fn project(p: Vector3) -> (f64, f64) {
     let (c, s) = (0.866_025_403_784_438_6, 0.5);
-    ((p.x - p.y) * c, p.z + (p.x + p.y) * s * 0.5)
+    ((p.x() - p.y()) * c, p.z() + (p.x() + p.y()) * s * 0.5)
 }
 
-fn iso_lines(
-    f: &dyn Fn(f64, f64) -> Vector3<f64>,
-    lines: usize,
-    steps: usize,
-) -> Vec<Vec<(f64, f64)>> {
+fn iso_lines(f: &dyn Fn(f64, f64) -> Vector3, lines: usize, steps: usize) -> Vec<Vec<(f64, f64)>> {
     let mut out = Vec::new();
     for a in 0..=lines {
         let s = a as f64 / lines as f64;

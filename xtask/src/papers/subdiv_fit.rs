@@ -35,7 +35,7 @@ pub(super) fn median_ms<T>(
 }
 
 /// (name, data, closed, the paper's rounds for its own shape of that kind).
-fn shapes(density: usize) -> [(&'static str, Vec<Vector2<f64>>, bool, usize); 2] {
+fn shapes(density: usize) -> [(&'static str, Vec<Vector2>, bool, usize); 2] {
     [
         ("closed petals", closed_petals(density), true, 4),
         ("open wave", open_wave(density), false, 6),
@@ -151,8 +151,8 @@ fn scaling_table() -> Result<Table, DynError> {
     })
 }
 
-fn xy(p: &[Vector2<f64>]) -> Vec<(f64, f64)> {
-    p.iter().map(|q| (q.x, q.y)).collect()
+fn xy(p: &[Vector2]) -> Vec<(f64, f64)> {
+    p.iter().map(|q| (q.x(), q.y())).collect()
 }
 
 fn dense(curve: &SubdivCurve<2>) -> Result<Vec<(f64, f64)>, DynError> {
@@ -177,7 +177,7 @@ fn polygon(curve: &SubdivCurve<2>) -> Vec<(f64, f64)> {
 }
 
 /// The curve after round 0 (initial fit) of a fit.
-fn initial_fit(data: &[Vector2<f64>], closed: bool) -> Result<(Fit<2>, SubdivCurve<2>), DynError> {
+fn initial_fit(data: &[Vector2], closed: bool) -> Result<(Fit<2>, SubdivCurve<2>), DynError> {
     let f = fit(data, closed, &FitOptions::new(TOL))?;
     // Round 0 alone: the same initial points with a cap of 0 rounds and a huge tolerance.
     let first = fit(
@@ -192,9 +192,9 @@ fn initial_fit(data: &[Vector2<f64>], closed: bool) -> Result<(Fit<2>, SubdivCur
 }
 
 /// Plots (a) the initial fit from the curvature maxima and (b) the final fit at tolerance 0.01.
-fn fit_plots(title: &str, data: &[Vector2<f64>], closed: bool) -> Result<(Plot, Plot), DynError> {
+fn fit_plots(title: &str, data: &[Vector2], closed: bool) -> Result<(Plot, Plot), DynError> {
     let (f, initial) = initial_fit(data, closed)?;
-    let pts_of = |idx: &[usize]| idx.iter().map(|&i| (data[i].x, data[i].y)).collect();
+    let pts_of = |idx: &[usize]| idx.iter().map(|&i| (data[i].x(), data[i].y())).collect();
     let a = Plot::new(format!("{title} (a) initial fit"), "x", "y")
         .equal()
         .with(Series::new("data", xy(data), Style::Points))

@@ -75,7 +75,7 @@ impl ParamCurveFit for CatmullRom {
 }
 
 /// Runs of data between consecutive sharp points (indices inclusive, wrapping for closed data).
-fn runs(data: &[Vector2<f64>], closed: bool) -> Vec<Vec<Point>> {
+fn runs(data: &[Vector2], closed: bool) -> Vec<Vec<Point>> {
     let n = data.len();
     let opts = FitOptions::new(0.01);
     let sharp: Vec<usize> = feature_points(
@@ -89,7 +89,7 @@ fn runs(data: &[Vector2<f64>], closed: bool) -> Vec<Vec<Point>> {
     .filter(|f| f.sharp)
     .map(|f| f.index)
     .collect();
-    let pt = |i: usize| Point::new(data[i % n].x, data[i % n].y);
+    let pt = |i: usize| Point::from(data[i % n]);
     let mut out = Vec::new();
     let count = if closed { sharp.len() } else { sharp.len() - 1 };
     for j in 0..count {
@@ -105,7 +105,7 @@ fn runs(data: &[Vector2<f64>], closed: bool) -> Vec<Vec<Point>> {
 }
 
 /// Global two-sided distance between sampled curve pieces and the data.
-pub(super) fn two_sided(samples: &[Vector2<f64>], data: &[Vector2<f64>], closed: bool) -> f64 {
+pub(super) fn two_sided(samples: &[Vector2], data: &[Vector2], closed: bool) -> f64 {
     let mut poly = data.to_vec();
     if closed {
         poly.push(data[0]);
@@ -126,7 +126,7 @@ const SAMPLES: usize = 64;
 /// [`two_sided`] for a fitted subdivision curve, sampled `SAMPLES` times per segment.
 pub(super) fn curve_two_sided(
     curve: &SubdivCurve<2>,
-    data: &[Vector2<f64>],
+    data: &[Vector2],
     closed: bool,
 ) -> Result<f64, DynError> {
     let segs = curve.segment_count();
@@ -147,7 +147,7 @@ fn kurbo_paths(runs: &[Vec<Point>], accuracy: f64) -> Vec<BezPath> {
 }
 
 /// kurbo's fit at `accuracy`: (segments, samples); a line segment counts like a cubic.
-fn kurbo_fit(runs: &[Vec<Point>], accuracy: f64) -> (usize, Vec<Vector2<f64>>) {
+fn kurbo_fit(runs: &[Vec<Point>], accuracy: f64) -> (usize, Vec<Vector2>) {
     let mut segs = 0;
     let mut samples = Vec::new();
     for path in kurbo_paths(runs, accuracy) {
@@ -155,7 +155,7 @@ fn kurbo_fit(runs: &[Vec<Point>], accuracy: f64) -> (usize, Vec<Vector2<f64>>) {
             segs += 1;
             for k in 0..=SAMPLES {
                 let p = seg.eval(k as f64 / SAMPLES as f64);
-                samples.push(Vector2::new(p.x, p.y));
+                samples.push(p.into());
             }
         }
     }

@@ -24,7 +24,7 @@ const TOL: f64 = 0.01;
 const REPS: usize = 11;
 
 /// (name, density, data, closed) of every compared shape.
-fn shapes() -> Vec<(&'static str, usize, Vec<Vector2<f64>>, bool)> {
+fn shapes() -> Vec<(&'static str, usize, Vec<Vector2>, bool)> {
     let mut out = Vec::new();
     for density in [1, 10] {
         out.push(("closed petals", density, closed_petals(density), true));
@@ -41,7 +41,7 @@ fn shapes() -> Vec<(&'static str, usize, Vec<Vector2<f64>>, bool)> {
 
 /// Runs the SciPy script on the shapes and returns its JSON rows, in the shapes' order.
 fn run_splprep(
-    shapes: &[(&'static str, usize, Vec<Vector2<f64>>, bool)],
+    shapes: &[(&'static str, usize, Vec<Vector2>, bool)],
 ) -> Result<Vec<Value>, DynError> {
     let python = python_env("scipy-venv", "scipy", &["numpy", "scipy"])?;
     let root = project_root();
@@ -52,7 +52,7 @@ fn run_splprep(
         .map(|(name, density, data, closed)| {
             json!({
                 "name": name, "density": density, "closed": closed,
-                "points": data.iter().map(|p| [p.x, p.y]).collect::<Vec<_>>(),
+                "points": data.iter().map(|p| [p.x(), p.y()]).collect::<Vec<_>>(),
             })
         })
         .collect();

@@ -5,27 +5,19 @@
 )]
 
 use bez_core::proptest_support::check_bezier_form;
-use bez_core::{BezierCurve, BezierForm, SVector, Vector2, Vector3};
+use bez_core::{BezierCurve, BezierForm, Vector, Vector2, Vector3};
 use lambda_bezier::{LambdaBasis, LambdaBezierCurve, LambdaRange};
 
 /// C(t) = Σ Pᵢ b_{i,n+1}(t) with the basis values from the recurrence (2) itself, started from
 /// Han & Liu's degree-3 basis (1): independent of the corner-cut Bézier form.
-fn position<const D: usize>(
-    points: &[SVector<f64, D>],
-    basis: &LambdaBasis,
-    t: f64,
-) -> SVector<f64, D> {
+fn position<const D: usize>(points: &[Vector<D>], basis: &LambdaBasis, t: f64) -> Vector<D> {
     let b = basis.eval_by_recurrence(t).unwrap();
     points.iter().zip(b).map(|(p, w)| p * w).sum()
 }
 
 /// C'(t) = Σ Pᵢ b'_{i,n+1}(t), each basis function differentiated on its own Bernstein
 /// coefficients (not the hodograph of the curve's Bézier form).
-fn velocity<const D: usize>(
-    points: &[SVector<f64, D>],
-    basis: &LambdaBasis,
-    t: f64,
-) -> SVector<f64, D> {
+fn velocity<const D: usize>(points: &[Vector<D>], basis: &LambdaBasis, t: f64) -> Vector<D> {
     points
         .iter()
         .enumerate()
@@ -33,7 +25,7 @@ fn velocity<const D: usize>(
         .sum()
 }
 
-fn check<const D: usize>(points: Vec<SVector<f64, D>>, lambda: f64) {
+fn check<const D: usize>(points: Vec<Vector<D>>, lambda: f64) {
     let n = points.len() - 1;
     let basis = LambdaBasis::new(n, lambda).unwrap();
     let curve = LambdaBezierCurve::new(points.clone(), lambda).unwrap();
@@ -59,7 +51,7 @@ fn lambda_curves_match_the_basis_through_the_trait() {
         check(planar.clone(), lambda);
     }
     // A spatial quintic λ-curve (n = 5) at both ends of its valid interval.
-    let spatial: Vec<Vector3<f64>> = (0..6)
+    let spatial: Vec<Vector3> = (0..6)
         .map(|i| {
             let a = f64::from(i) * 0.9;
             Vector3::new(a.cos(), a.sin(), 0.3 * f64::from(i))

@@ -1,7 +1,7 @@
 //! Serialization round trips and validation on deserialization (feature `serde`).
 #![cfg(feature = "serde")]
 
-use bez_core::{BezierForm, Vector2};
+use bez_core::Vector2;
 use lambda_bezier::{LambdaBezierCurve, LambdaBezierSurface};
 
 #[test]
@@ -24,7 +24,7 @@ fn curve_round_trip_and_rejects_bad_lambda() {
 
 #[test]
 fn surface_round_trip() {
-    let rows: Vec<Vec<Vector2<f64>>> = (0..3)
+    let rows: Vec<Vec<Vector2>> = (0..3)
         .map(|i| {
             (0..4)
                 .map(|j| Vector2::new(f64::from(i), f64::from(j)))

@@ -20,10 +20,7 @@ const STEPS_PER_OCTAVE: i32 = 8;
 const EPS_STEPS: std::ops::RangeInclusive<i32> = -24..=40;
 
 /// [`measured_hausdorff`] at its default density (20,001 curve samples, 5 per segment).
-pub(in crate::papers) fn hausdorff(
-    c: &BezierCurve<2>,
-    poly: &[Vector2<f64>],
-) -> Result<f64, DynError> {
+pub(in crate::papers) fn hausdorff(c: &BezierCurve<2>, poly: &[Vector2]) -> Result<f64, DynError> {
     Ok(measured_hausdorff(c, poly, HausdorffSampling::default())?)
 }
 
@@ -51,7 +48,7 @@ fn run(c: &BezierCurve<2>, rule: SplitRule, eps: f64) -> Result<Flattening, DynE
 }
 
 /// The chord polyline through the pieces' end points.
-fn chords(c: &BezierCurve<2>, f: &Flattening) -> Vec<Vector2<f64>> {
+fn chords(c: &BezierCurve<2>, f: &Flattening) -> Vec<Vector2> {
     std::iter::once(c.start())
         .chain(f.pieces.iter().filter_map(|p| p.points.last().copied()))
         .collect()

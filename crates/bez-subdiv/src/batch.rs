@@ -28,7 +28,7 @@ pub fn flatten_batch<C: BezierForm<2> + Sync>(
     }
 }
 
-#[cfg(test)]
+#[cfg(all(test, feature = "paper"))]
 mod tests {
     use super::*;
     use crate::cases::random_curves;

@@ -90,6 +90,7 @@ mod tests {
         Ok(())
     }
 
+    #[cfg(feature = "paper")]
     #[test]
     fn uniform_steps_of_wang_count_are_within_tolerance() -> Result<(), crate::SubdivError> {
         for degree in [3, 7, 12, 25] {

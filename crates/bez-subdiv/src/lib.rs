@@ -21,7 +21,10 @@
 //! `&dyn BezierForm<2>`. They flatten the exact Bézier form, which the curve lends for free.
 //!
 //! Feature `rayon`: [`flatten_batch`] flattens many curves in parallel. Feature `serde`: serde on
-//! the data types.
+//! the data types. Feature `paper`: what exists only to reproduce or compare with the paper, the
+//! seeded test curves of Table 1 (`cases`), the exact-optimum split search (`Search::Exact`,
+//! with argmin) and `split_objective`; it brings rand and argmin, which the library itself
+//! does not need.
 //!
 //! ```
 //! use bez_core::{BezierCurve, Vector2};
@@ -40,6 +43,7 @@
 
 mod batch;
 mod bound;
+#[cfg(feature = "paper")]
 pub mod cases;
 mod chord;
 mod error;
@@ -68,8 +72,10 @@ pub use crate::hausdorff::{HausdorffSampling, measured_hausdorff};
 pub use crate::local_wang::{LOCAL_WANG_STEPS, flatten_local_wang};
 pub use crate::measure::{distance_to_chord_line, flatness, hull_area, max_chord_distance};
 pub use crate::near_optimal::{flatten_near_optimal, optimal_segment_count};
+#[cfg(feature = "paper")]
+pub use crate::split_rule::split_objective;
 pub use crate::split_rule::{
-    ADAPTIVE_BAND, Choice, Levels, Objective, PAPER_LEVELS, Search, SplitRule, split_objective,
+    ADAPTIVE_BAND, Choice, Levels, Objective, PAPER_LEVELS, Search, SplitRule,
 };
 
 /// The README's example, compiled and run with the doctests.

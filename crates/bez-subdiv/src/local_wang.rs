@@ -84,7 +84,7 @@ fn local_wang_bezier(
     )
 }
 
-#[cfg(test)]
+#[cfg(all(test, feature = "paper"))]
 mod tests {
     #![allow(clippy::unwrap_used, reason = "tests fail loudly")]
 

@@ -2,7 +2,9 @@
 
 use core::cell::Cell;
 
+#[cfg(feature = "paper")]
 use argmin::core::{CostFunction, Executor, State};
+#[cfg(feature = "paper")]
 use argmin::solver::brent::BrentOpt;
 use bez_core::{Vector2, de_casteljau_split};
 
@@ -26,7 +28,9 @@ pub enum Search {
     /// The paper's scan t = 0.2 + 0.05k, k = 0..12 (13 evaluations).
     Grid,
     /// Beyond the paper: scan t = 0.05k, k = 1..19, then Brent's method (argmin) on the
-    /// bracket around the best grid point, to 1e-8 in t.
+    /// bracket around the best grid point, to 1e-8 in t. Used to compare with the paper's grid;
+    /// feature `paper` (it brings argmin).
+    #[cfg(feature = "paper")]
     Exact,
 }
 
@@ -102,6 +106,7 @@ impl SplitRule {
                 };
                 let s = match search {
                     Search::Grid => "grid",
+                    #[cfg(feature = "paper")]
                     Search::Exact => "exact",
                 };
                 let l = match levels {
@@ -151,6 +156,7 @@ impl SplitRule {
         };
         let t = match search {
             Search::Grid => grid_minimum(&f, (0..=12).map(|k| 0.2 + 0.05 * f64::from(k))),
+            #[cfg(feature = "paper")]
             Search::Exact => {
                 let t0 = grid_minimum(&f, (1..=19).map(|k| 0.05 * f64::from(k)));
                 brent(&f, (t0 - 0.05).max(1e-3), (t0 + 0.05).min(1.0 - 1e-3))?
@@ -183,6 +189,10 @@ pub struct Choice {
 ///
 /// Cost O(n²) for the split plus O(n) (flatness) or O(n log n) (hull area).
 #[must_use]
+#[cfg_attr(
+    not(feature = "paper"),
+    expect(unreachable_pub, reason = "exported with the paper feature")
+)]
 pub fn split_objective(objective: Objective, points: &[Vector2], t: f64) -> f64 {
     let n = points.len();
     let mut left = vec![Vector2::zeros(); n];
@@ -208,8 +218,10 @@ fn grid_minimum(f: &impl Fn(f64) -> f64, grid: impl Iterator<Item = f64>) -> f64
     best.0
 }
 
+#[cfg(feature = "paper")]
 struct Cost<'a, F>(&'a F);
 
+#[cfg(feature = "paper")]
 impl<F: Fn(f64) -> f64> CostFunction for Cost<'_, F> {
     type Param = f64;
     type Output = f64;
@@ -218,6 +230,7 @@ impl<F: Fn(f64) -> f64> CostFunction for Cost<'_, F> {
     }
 }
 
+#[cfg(feature = "paper")]
 fn brent(f: &impl Fn(f64) -> f64, lo: f64, hi: f64) -> Result<f64, SubdivError> {
     let solver = BrentOpt::new(lo, hi).set_tolerance(1e-8, 1e-12);
     let res = Executor::new(Cost(f), solver)

@@ -13,6 +13,10 @@
 //! Nelder–Mead, kept for comparison), typical spatial curves from four points, the log-spiral
 //! pole of the control points, and logarithmic curvature/torsion graphs.
 //!
+//! Features: `serde` (serde on the data types) and `paper`: what exists only to reproduce or
+//! compare with the paper (its cases, the Nelder–Mead baselines, the printed pole of eq. (19)),
+//! with the rand and argmin dependencies only that code needs.
+//!
 //! ```
 //! use bez_core::Vector2;
 //! use class_a::TypicalPlanar;
@@ -37,6 +41,7 @@ mod sign;
 mod spatial;
 mod spiral;
 
+#[cfg(feature = "paper")]
 pub mod cases;
 
 pub use crate::certificate::{
@@ -56,12 +61,13 @@ pub use crate::matrix::{
     ClassAReport, Condition, SUBCURVE_SAMPLES, typical_matrix2, typical_planar_margin,
 };
 pub use crate::planar::{
-    PlanarFeasibility, PlanarGeometry, TypicalPlanar, planar_feasibility, planar_nelder_mead,
-    solve_scale,
+    PlanarFeasibility, PlanarGeometry, TypicalPlanar, planar_feasibility, solve_scale,
 };
 pub use crate::sign::{MAX_PIECES, MAX_SUBDIVISION_DEPTH};
 pub use crate::spatial::{TypicalSpatial, rotation};
-pub use crate::spiral::{apollonius_pole, log_spiral_pole, printed_pole_eq19, spiral_deviation};
+pub use crate::spiral::{apollonius_pole, log_spiral_pole, spiral_deviation};
+#[cfg(feature = "paper")]
+pub use crate::{planar::planar_nelder_mead, spiral::printed_pole_eq19};
 
 /// The README's example, compiled and run with the doctests.
 #[cfg(doctest)]

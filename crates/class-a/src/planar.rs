@@ -375,9 +375,12 @@ fn geometric_sum(s: f64, theta: f64, n: usize) -> Complex<f64> {
 /// Kept for comparison with [`TypicalPlanar::from_points`]. Returns the curve and the final
 /// relative endpoint residual.
 ///
+/// Feature `paper`.
+///
 /// # Errors
 /// As [`planar_feasibility`], [`ClassAError::Optimizer`] if argmin fails,
 /// [`ClassAError::NoConvergence`] for a non-positive L or s.
+#[cfg(feature = "paper")]
 pub fn planar_nelder_mead(
     a0: &Vector2,
     a1: &Vector2,

@@ -244,8 +244,11 @@ impl TypicalSpatial {
     /// Returns the curve and the final value of −f. Since −f ≈ angle²/2 is computed as
     /// 1 − cos, it cannot resolve chord angles below about 1.5e-8.
     ///
+    /// Feature `paper`.
+    ///
     /// # Errors
     /// As [`TypicalSpatial::from_points`], [`ClassAError::Optimizer`] if argmin fails.
+    #[cfg(feature = "paper")]
     pub fn nelder_mead(
         a: &[Vector3; 4],
         degree: usize,

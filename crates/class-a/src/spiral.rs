@@ -36,7 +36,9 @@ pub fn log_spiral_pole(
 }
 
 /// The pole as printed in eq. (19) (with unit Δb₀ = μ): kept to document the sign erratum.
+/// Feature `paper`.
 #[must_use]
+#[cfg(feature = "paper")]
 pub fn printed_pole_eq19(b0: &Vector2, mu: &Vector2, s: f64, theta: f64) -> Vector2 {
     let (sn, c) = theta.sin_cos();
     let rx = b0.x() + b0.x() * s * s + mu.x() - s * ((2.0 * b0.x() + mu.x()) * c + mu.y() * sn);

@@ -127,7 +127,7 @@ pub fn shape_preserving_curves(
         .collect()
 }
 
-#[cfg(test)]
+#[cfg(all(test, feature = "paper"))]
 mod tests {
     use super::*;
     use crate::cases::akima_data;

@@ -31,6 +31,7 @@
 //! ```
 
 mod basis;
+#[cfg(feature = "paper")]
 pub mod cases;
 mod curve;
 mod error;

@@ -15,7 +15,7 @@
 //! C^r joins parametrized by B-spline coefficients and Bézier extraction, optionally periodic);
 //! boundary conditions fix whole rows of coefficients and are eliminated. On the same space,
 //! four [`Method`]s: the paper's Bernstein least squares, the exact ∫∫R² least squares, and
-//! the Bloor–Wilson baselines, collocation and Galerkin. The [`cases`] module holds the
+//! the Bloor–Wilson baselines, collocation and Galerkin. The `cases` module (feature `paper`) holds the
 //! paper's examples with exact solutions. The result exports to CAD as one B-spline surface
 //! ([`Solution::spline`], [`write_step`] for STEP AP214, [`write_iges`] for IGES entity 128).
 //!
@@ -43,6 +43,7 @@
 
 mod bernstein_ops;
 mod boundary;
+#[cfg(feature = "paper")]
 pub mod cases;
 mod error;
 mod grid;

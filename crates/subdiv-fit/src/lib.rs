@@ -14,7 +14,7 @@
 //! The paper's eigen-structure closed form (Theorem 2, eq. 3) collapses, once its misprints are
 //! corrected, to one uniform cubic B-spline segment per polygon edge: a sharp vertex `p_i` acts as if
 //! its neighbour across it were the phantom point `2 p_i − p_{i+1}`.
-//! [`SubdivCurve::segment_controls`] implements that; module [`eigen`] keeps the corrected eigen
+//! [`SubdivCurve::segment_controls`] implements that; module `eigen` (feature `paper`) keeps the corrected eigen
 //! form, and the tests check that the two agree with each other and with repeated refinement.
 //!
 //! ```
@@ -37,12 +37,19 @@
 //! # Ok::<(), subdiv_fit::SubdivFitError>(())
 //! ```
 //!
-//! Fitting ordered data with corners (one of the crate's documented test shapes):
+//! Fitting ordered data with corners: 64 points around the unit square.
 //!
 //! ```
-//! use subdiv_fit::{FitOptions, cases, fit};
+//! use subdiv_fit::{FitOptions, Vector2, fit};
 //!
-//! let data = cases::closed_petals(1); // 64 points, unit bounding box, 4 corners
+//! let corners = [(0.0, 0.0), (1.0, 0.0), (1.0, 1.0), (0.0, 1.0)];
+//! let data: Vec<Vector2> = (0..64)
+//!     .map(|k| {
+//!         let ((x0, y0), (x1, y1)) = (corners[k / 16], corners[(k / 16 + 1) % 4]);
+//!         let s = (k % 16) as f64 / 16.0;
+//!         Vector2::new(x0 + s * (x1 - x0), y0 + s * (y1 - y0))
+//!     })
+//!     .collect();
 //! let result = fit(&data, true, &FitOptions::new(0.01))?;
 //! let last = result.last().expect("one report per round");
 //! assert!(last.max_data_to_curve <= 0.01 && last.max_curve_to_data <= 0.01);
@@ -55,10 +62,12 @@
 
 mod banded;
 mod bspline;
+#[cfg(feature = "paper")]
 pub mod cases;
 mod curvature;
 mod curve;
 mod distance;
+#[cfg(feature = "paper")]
 pub mod eigen;
 mod error;
 mod fit;

@@ -12,10 +12,11 @@ use subdiv_fit::{FitOptions, SubdivCurve, Vector2, fit};
 
 fn eval(c: &mut Criterion) {
     let data = closed_petals(1);
-    let curve = fit(&data, true, &FitOptions::new(0.01))
+    let curve = fit(&data, subdiv_fit::Closure::Closed, &FitOptions::new(0.01))
         .map(|f| f.curve)
         .unwrap_or_else(|_| {
-            SubdivCurve::smooth(data.clone(), true).unwrap_or_else(|_| unreachable!())
+            SubdivCurve::smooth(data.clone(), subdiv_fit::Closure::Closed)
+                .unwrap_or_else(|_| unreachable!())
         });
     let segs = curve.segment_count() as f64;
     let params: Vec<f64> = (0..1000).map(|k| k as f64 * segs / 999.0).collect();
@@ -30,7 +31,13 @@ fn fitting(c: &mut Criterion) {
     for density in [1, 10, 100] {
         let data = closed_petals(density);
         g.bench_with_input(BenchmarkId::from_parameter(data.len()), &data, |b, d| {
-            b.iter(|| fit(black_box(d), true, &FitOptions::new(0.01)));
+            b.iter(|| {
+                fit(
+                    black_box(d),
+                    subdiv_fit::Closure::Closed,
+                    &FitOptions::new(0.01),
+                )
+            });
         });
     }
     g.finish();
@@ -38,7 +45,13 @@ fn fitting(c: &mut Criterion) {
     for density in [1, 10, 100] {
         let data = open_wave(density);
         g.bench_with_input(BenchmarkId::from_parameter(data.len()), &data, |b, d| {
-            b.iter(|| fit(black_box(d), false, &FitOptions::new(0.01)));
+            b.iter(|| {
+                fit(
+                    black_box(d),
+                    subdiv_fit::Closure::Open,
+                    &FitOptions::new(0.01),
+                )
+            });
         });
     }
     g.finish();

@@ -150,7 +150,7 @@ fn run() -> Result<(), Box<dyn std::error::Error>> {
                 poly.join(" ")
             );
             let start = std::time::Instant::now();
-            match fit(data, true, &FitOptions::new(tol)) {
+            match fit(data, subdiv_fit::Closure::Closed, &FitOptions::new(tol)) {
                 Ok(f) => {
                     let us = start.elapsed().as_secs_f64() * 1e6;
                     let r = f.last().copied().ok_or("empty report")?;

@@ -13,11 +13,68 @@ use crate::bspline::{bspline_basis, bspline_basis_d1, bspline_basis_d2, bspline_
 /// (indices modulo `n` for a closed polygon).
 /// Both end vertices of an open polygon are sharp, whatever flag is given.
 #[derive(Debug, Clone, PartialEq)]
-#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
+#[cfg_attr(
+    feature = "serde",
+    derive(serde::Serialize, serde::Deserialize),
+    serde(try_from = "CurveRepr<D>", into = "CurveRepr<D>")
+)]
 pub struct SubdivCurve<const D: usize> {
     points: Vec<Vector<D>>,
     sharp: Vec<bool>,
+    closure: Closure,
+}
+
+/// Whether a control polygon (and its limit curve) is open or closed.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
+pub enum Closure {
+    /// An open polygon: its limit curve starts at the first vertex and ends at the last, both
+    /// sharp.
+    Open,
+    /// A closed polygon: the last vertex connects back to the first.
+    Closed,
+}
+
+impl Closure {
+    /// `true` for [`Closure::Closed`].
+    #[must_use]
+    pub fn is_closed(self) -> bool {
+        self == Self::Closed
+    }
+
+    /// [`Closure::Closed`] when `closed`.
+    pub(crate) fn from_closed(closed: bool) -> Self {
+        if closed { Self::Closed } else { Self::Open }
+    }
+}
+
+/// Serialized form of [`SubdivCurve`]: validated again by [`SubdivCurve::new`] on
+/// deserialization.
+#[cfg(feature = "serde")]
+#[derive(serde::Serialize, serde::Deserialize)]
+struct CurveRepr<const D: usize> {
+    points: Vec<Vector<D>>,
+    sharp: Vec<bool>,
     closed: bool,
+}
+
+#[cfg(feature = "serde")]
+impl<const D: usize> TryFrom<CurveRepr<D>> for SubdivCurve<D> {
+    type Error = SubdivFitError;
+    fn try_from(r: CurveRepr<D>) -> Result<Self, SubdivFitError> {
+        Self::new(r.points, r.sharp, Closure::from_closed(r.closed))
+    }
+}
+
+#[cfg(feature = "serde")]
+impl<const D: usize> From<SubdivCurve<D>> for CurveRepr<D> {
+    fn from(c: SubdivCurve<D>) -> Self {
+        Self {
+            points: c.points,
+            sharp: c.sharp,
+            closed: c.closure.is_closed(),
+        }
+    }
 }
 
 /// Position and derivatives of the limit curve at one parameter.
@@ -43,8 +100,9 @@ impl<const D: usize> SubdivCurve<D> {
     pub fn new(
         points: Vec<Vector<D>>,
         mut sharp: Vec<bool>,
-        closed: bool,
+        closure: Closure,
     ) -> Result<Self, SubdivFitError> {
+        let closed = closure.is_closed();
         let needed = if closed { 3 } else { 2 };
         if points.len() < needed {
             return Err(SubdivFitError::TooFewPoints {
@@ -69,7 +127,7 @@ impl<const D: usize> SubdivCurve<D> {
         Ok(Self {
             points,
             sharp,
-            closed,
+            closure,
         })
     }
 
@@ -77,9 +135,9 @@ impl<const D: usize> SubdivCurve<D> {
     ///
     /// # Errors
     /// As [`SubdivCurve::new`].
-    pub fn smooth(points: Vec<Vector<D>>, closed: bool) -> Result<Self, SubdivFitError> {
+    pub fn smooth(points: Vec<Vector<D>>, closure: Closure) -> Result<Self, SubdivFitError> {
         let n = points.len();
-        Self::new(points, vec![false; n], closed)
+        Self::new(points, vec![false; n], closure)
     }
 
     /// The control points.
@@ -92,14 +150,21 @@ impl<const D: usize> SubdivCurve<D> {
         &self.sharp
     }
 
+    /// Whether the polygon is open or closed.
+    #[must_use]
+    pub fn closure(&self) -> Closure {
+        self.closure
+    }
+
     /// Whether the polygon is closed.
+    #[must_use]
     pub fn is_closed(&self) -> bool {
-        self.closed
+        self.closure.is_closed()
     }
 
     /// Number of limit-curve segments: `n` if closed, `n - 1` if open.
     pub fn segment_count(&self) -> usize {
-        if self.closed {
+        if self.closure.is_closed() {
             self.points.len()
         } else {
             self.points.len() - 1
@@ -135,7 +200,7 @@ impl<const D: usize> SubdivCurve<D> {
         Self {
             points,
             sharp,
-            closed: self.closed,
+            closure: self.closure,
         }
     }
 

@@ -7,7 +7,7 @@ use bez_core::Vector;
 use crate::banded::CyclicBand;
 use crate::bspline::bspline_basis;
 use crate::curvature::feature_points;
-use crate::curve::combine;
+use crate::curve::{Closure, combine};
 use crate::distance::{foot_point_ctrl, point_polyline_distance};
 use crate::insertion::{ChordLengths, Verdict, insert_points, segment_range};
 use crate::tridiagonal::solve_tridiagonal;
@@ -229,9 +229,10 @@ fn validate_options(o: &FitOptions) -> Result<(), SubdivFitError> {
 /// [`SubdivFitError::NoConvergence`] when the round cap is hit or no segment can take another point.
 pub fn fit<const D: usize>(
     data: &[Vector<D>],
-    closed: bool,
+    closure: Closure,
     options: &FitOptions,
 ) -> Result<Fit<D>, SubdivFitError> {
+    let closed = closure.is_closed();
     validate(data, closed)?;
     validate_options(options)?;
     let n = data.len();
@@ -350,7 +351,7 @@ fn solve_curve<const D: usize>(
     let p = solve_tridiagonal(&lower, &diag, &upper, &q, closed)
         .ok_or(SubdivFitError::SingularSystem { size: k })?;
     let points: Vec<Vector<D>> = p.into_iter().map(Vector::<D>::from).collect();
-    let curve = SubdivCurve::new(points, sharp, closed)?;
+    let curve = SubdivCurve::new(points, sharp, Closure::from_closed(closed))?;
     match mode {
         FitMode::Interpolate => Ok(curve),
         FitMode::LeastSquares => {
@@ -452,7 +453,7 @@ fn least_squares<const D: usize>(
     if !points.iter().all(|p| p.iter().all(|c| c.is_finite())) {
         return Err(SubdivFitError::SingularSystem { size: u });
     }
-    SubdivCurve::new(points, sharp.to_vec(), curve.is_closed())
+    SubdivCurve::new(points, sharp.to_vec(), curve.closure())
 }
 
 /// Chord-length parameters of data a..=b (indices mod n), the paper's Newton start (Sec. 5).

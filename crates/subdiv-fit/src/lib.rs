@@ -18,7 +18,7 @@
 //! form, and the tests check that the two agree with each other and with repeated refinement.
 //!
 //! ```
-//! use subdiv_fit::{SubdivCurve, Vector2};
+//! use subdiv_fit::{Closure, SubdivCurve, Vector2};
 //!
 //! let square = vec![
 //!     Vector2::new(0.0, 0.0),
@@ -27,7 +27,7 @@
 //!     Vector2::new(0.0, 1.0),
 //! ];
 //! // One sharp corner, three smooth ones.
-//! let curve = SubdivCurve::new(square, vec![true, false, false, false], true)?;
+//! let curve = SubdivCurve::new(square, vec![true, false, false, false], Closure::Closed)?;
 //! // A sharp vertex is interpolated; a regular one reaches (p_{i-1} + 4 p_i + p_{i+1}) / 6.
 //! assert_eq!(curve.eval(0.0)?, Vector2::new(0.0, 0.0));
 //! assert!((curve.eval(2.0)? - Vector2::new(5.0 / 6.0, 5.0 / 6.0)).norm() < 1e-15);
@@ -40,7 +40,7 @@
 //! Fitting ordered data with corners: 64 points around the unit square.
 //!
 //! ```
-//! use subdiv_fit::{FitOptions, Vector2, fit};
+//! use subdiv_fit::{Closure, FitOptions, Vector2, fit};
 //!
 //! let corners = [(0.0, 0.0), (1.0, 0.0), (1.0, 1.0), (0.0, 1.0)];
 //! let data: Vec<Vector2> = (0..64)
@@ -50,7 +50,7 @@
 //!         Vector2::new(x0 + s * (x1 - x0), y0 + s * (y1 - y0))
 //!     })
 //!     .collect();
-//! let result = fit(&data, true, &FitOptions::new(0.01))?;
+//! let result = fit(&data, Closure::Closed, &FitOptions::new(0.01))?;
 //! let last = result.last().expect("one report per round");
 //! assert!(last.max_data_to_curve <= 0.01 && last.max_curve_to_data <= 0.01);
 //! // The corners are sharp control points sitting on their data points.
@@ -79,7 +79,7 @@ mod tridiagonal;
 pub use bez_core::{Vector, Vector2, Vector3};
 pub use bspline::{bspline_basis, bspline_basis_d1, bspline_basis_d2, bspline_to_bezier};
 pub use curvature::{FeaturePoint, discrete_curvature, feature_points, turning_angle};
-pub use curve::{CurvePoint, SubdivCurve};
+pub use curve::{Closure, CurvePoint, SubdivCurve};
 pub use distance::{foot_point, point_polyline_distance};
 pub use error::SubdivFitError;
 pub use fit::{ErrorMeasure, Fit, FitMode, FitOptions, Insertion, RoundReport, fit};

@@ -14,7 +14,12 @@ fn segments_match_the_bspline_evaluation_through_the_trait() {
         Vector2::new(1.5, 2.5),
         Vector2::new(-0.5, 1.5),
     ];
-    let curve = SubdivCurve::new(polygon, vec![true, false, false, true, false], true).unwrap();
+    let curve = SubdivCurve::new(
+        polygon,
+        vec![true, false, false, true, false],
+        subdiv_fit::Closure::Closed,
+    )
+    .unwrap();
     for i in 0..curve.segment_count() {
         let segment = curve.segment(i).unwrap();
         assert_eq!(segment.index(), i);
@@ -42,7 +47,7 @@ fn open_spatial_segments_match_through_the_trait() {
             Vector3::new(a, (0.8 * a).sin(), 0.2 * a * a)
         })
         .collect();
-    let curve = SubdivCurve::smooth(polygon, false).unwrap();
+    let curve = SubdivCurve::smooth(polygon, subdiv_fit::Closure::Open).unwrap();
     for i in 0..curve.segment_count() {
         let segment = curve.segment(i).unwrap();
         let r = check_bezier_form(

@@ -7,6 +7,15 @@ use subdiv_fit::eigen::{
 };
 use subdiv_fit::{SubdivCurve, SubdivFitError, Vector, Vector2, Vector3};
 
+/// The closure of a polygon from a flag of the test data.
+fn closure(closed: bool) -> subdiv_fit::Closure {
+    if closed {
+        subdiv_fit::Closure::Closed
+    } else {
+        subdiv_fit::Closure::Open
+    }
+}
+
 fn polygon<const D: usize>(
     min: usize,
     max: usize,
@@ -49,7 +58,7 @@ proptest! {
 
     #[test]
     fn exact_matches_refinement_masks_2d((p, f, closed) in polygon::<2>(3, 8)) {
-        let c = SubdivCurve::new(p, f, closed).unwrap();
+        let c = SubdivCurve::new(p, f, closure(closed)).unwrap();
         for levels in [1, 3, 6] {
             check_against_refinement(&c, levels, 1e-12);
         }
@@ -57,14 +66,14 @@ proptest! {
 
     #[test]
     fn exact_matches_refinement_masks_3d((p, f, closed) in polygon::<3>(3, 8)) {
-        let c = SubdivCurve::new(p, f, closed).unwrap();
+        let c = SubdivCurve::new(p, f, closure(closed)).unwrap();
         check_against_refinement(&c, 4, 1e-12);
     }
 
     #[test]
     fn eigen_form_equals_collapsed_form(p in prop::array::uniform3(prop::array::uniform::<_, 2>(-5.0..5.0f64).prop_map(Vector2::from)), u in 0.0..=1.0f64) {
         // Sharp p0, regular p1 (and p2): segment 0 of an open polygon with p1 regular.
-        let c = SubdivCurve::new(vec![p[0], p[1], p[2]], vec![true, false, true], false).unwrap();
+        let c = SubdivCurve::new(vec![p[0], p[1], p[2]], vec![true, false, true], subdiv_fit::Closure::Open).unwrap();
         let collapsed = c.eval_segment(0, u).unwrap();
         let eigen = eval_sharp_segment_eigen(&p, u).unwrap();
         prop_assert!((collapsed - eigen).norm() <= 1e-12 * (1.0 + collapsed.norm()));
@@ -72,7 +81,7 @@ proptest! {
 
     #[test]
     fn segment_bezier_is_exact((p, f, closed) in polygon::<3>(3, 7), u in 0.0..=1.0f64) {
-        let c = SubdivCurve::new(p, f, closed).unwrap();
+        let c = SubdivCurve::new(p, f, closure(closed)).unwrap();
         for i in 0..c.segment_count() {
             let b = c.segment_bezier(i).unwrap();
             let x = c.eval_segment(i, u).unwrap();
@@ -86,7 +95,7 @@ proptest! {
 
     #[test]
     fn continuity_at_joints((p, f, closed) in polygon::<2>(4, 9)) {
-        let c = SubdivCurve::new(p, f, closed).unwrap();
+        let c = SubdivCurve::new(p, f, closure(closed)).unwrap();
         let n = c.points().len();
         for i in 0..c.segment_count() {
             let next = i + 1;
@@ -126,7 +135,12 @@ fn twelve_levels_of_refinement_converge_to_the_exact_curve() {
         Vector3::new(2.0, -2.0, 1.0),
         Vector3::new(0.5, -1.5, 0.0),
     ];
-    let c = SubdivCurve::new(p, vec![false, true, false, false, true, false], true).unwrap();
+    let c = SubdivCurve::new(
+        p,
+        vec![false, true, false, false, true, false],
+        subdiv_fit::Closure::Closed,
+    )
+    .unwrap();
     check_against_refinement(&c, 12, 1e-12);
     // The refined vertices themselves approach the curve at rate 4^-levels.
     let r = c.refine_levels(12);
@@ -141,7 +155,7 @@ fn twelve_levels_of_refinement_converge_to_the_exact_curve() {
 fn sharp_sharp_segment_is_the_line_of_eq_2() {
     let a = Vector2::new(1.0, 2.0);
     let b = Vector2::new(4.0, -2.0);
-    let c = SubdivCurve::new(vec![a, b], vec![true, true], false).unwrap();
+    let c = SubdivCurve::new(vec![a, b], vec![true, true], subdiv_fit::Closure::Open).unwrap();
     for k in 0..=8 {
         let u = k as f64 / 8.0;
         let x = c.eval_segment(0, u).unwrap();
@@ -167,7 +181,12 @@ fn eigen_decomposition_identities() {
         Vector2::new(2.0, 1.0),
         Vector2::new(3.0, 5.0),
     ];
-    let c = SubdivCurve::new(p.to_vec(), vec![true, false, true], false).unwrap();
+    let c = SubdivCurve::new(
+        p.to_vec(),
+        vec![true, false, true],
+        subdiv_fit::Closure::Open,
+    )
+    .unwrap();
     let r = c.refine();
     for row in 0..3 {
         let expect = p[0] * a[(row, 0)] + p[1] * a[(row, 1)] + p[2] * a[(row, 2)];
@@ -183,7 +202,12 @@ fn limit_masks() {
         Vector2::new(6.0, 6.0),
         Vector2::new(0.0, 6.0),
     ];
-    let c = SubdivCurve::new(p, vec![false, false, true, false], true).unwrap();
+    let c = SubdivCurve::new(
+        p,
+        vec![false, false, true, false],
+        subdiv_fit::Closure::Closed,
+    )
+    .unwrap();
     assert_eq!(c.eval(2.0).unwrap(), Vector2::new(6.0, 6.0));
     assert!((c.eval(1.0).unwrap() - Vector2::new(5.0, 1.0)).norm() < 1e-14);
     assert!((c.eval(0.0).unwrap() - Vector2::new(1.0, 1.0)).norm() < 1e-14);
@@ -193,15 +217,15 @@ fn limit_masks() {
 fn bad_input_gives_typed_errors() {
     let p = vec![Vector2::new(0.0, 0.0), Vector2::new(1.0, 0.0)];
     assert!(matches!(
-        SubdivCurve::new(p.clone(), vec![false; 2], true),
+        SubdivCurve::new(p.clone(), vec![false; 2], subdiv_fit::Closure::Closed),
         Err(SubdivFitError::TooFewPoints { got: 2, needed: 3 })
     ));
     assert!(matches!(
-        SubdivCurve::new(p[..1].to_vec(), vec![false], false),
+        SubdivCurve::new(p[..1].to_vec(), vec![false], subdiv_fit::Closure::Open),
         Err(SubdivFitError::TooFewPoints { .. })
     ));
     assert!(matches!(
-        SubdivCurve::new(p.clone(), vec![false; 3], false),
+        SubdivCurve::new(p.clone(), vec![false; 3], subdiv_fit::Closure::Open),
         Err(SubdivFitError::FlagCount {
             flags: 3,
             points: 2
@@ -211,11 +235,11 @@ fn bad_input_gives_typed_errors() {
         SubdivCurve::new(
             vec![p[0], Vector2::new(f64::NAN, 0.0)],
             vec![false; 2],
-            false
+            subdiv_fit::Closure::Open
         ),
         Err(SubdivFitError::NonFinite { index: 1 })
     ));
-    let c = SubdivCurve::new(p, vec![false; 2], false).unwrap();
+    let c = SubdivCurve::new(p, vec![false; 2], subdiv_fit::Closure::Open).unwrap();
     assert_eq!(c.sharp(), &[true, true]);
     assert!(matches!(
         c.eval(1.5),
@@ -243,7 +267,7 @@ fn svg_path_has_one_cubic_per_segment() {
         Vector2::new(1.0, 0.0),
         Vector2::new(1.0, 1.0),
     ];
-    let c = SubdivCurve::new(p, vec![false; 3], true).unwrap();
+    let c = SubdivCurve::new(p, vec![false; 3], subdiv_fit::Closure::Closed).unwrap();
     let s = subdiv_fit::svg_path(&c).unwrap();
     assert_eq!(s.matches(" C ").count(), 3);
     assert!(s.starts_with("M ") && s.ends_with(" Z"));

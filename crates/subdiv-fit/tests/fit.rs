@@ -35,15 +35,19 @@ fn recovers_data_sampled_from_a_subdivision_curve() {
         Vector2::new(-1.0, 3.0),
         Vector2::new(-2.0, 1.0),
     ];
-    let truth =
-        SubdivCurve::new(ctrl, vec![false, false, true, false, false, false], true).unwrap();
+    let truth = SubdivCurve::new(
+        ctrl,
+        vec![false, false, true, false, false, false],
+        subdiv_fit::Closure::Closed,
+    )
+    .unwrap();
     let per = 24;
     let count = truth.segment_count() * per;
     let data: Vec<Vector2> = (0..count)
         .map(|k| truth.eval(k as f64 / per as f64).unwrap())
         .collect();
     let tol = 1e-3;
-    let f = fit(&data, true, &FitOptions::new(tol)).unwrap();
+    let f = fit(&data, subdiv_fit::Closure::Closed, &FitOptions::new(tol)).unwrap();
     let last = f.last().unwrap();
     assert!(last.max_data_to_curve <= tol && last.max_curve_to_data <= tol);
     all_within(&data, &f, tol);
@@ -72,7 +76,16 @@ fn test_shapes_converge_with_corners_sharp() {
                 mode,
                 ..FitOptions::new(0.01)
             };
-            let f = fit(&data, closed, &opts).unwrap();
+            let f = fit(
+                &data,
+                if closed {
+                    subdiv_fit::Closure::Closed
+                } else {
+                    subdiv_fit::Closure::Open
+                },
+                &opts,
+            )
+            .unwrap();
             all_within(&data, &f, 0.01);
             let r = f.last().unwrap();
             assert!(r.max_data_to_curve <= 0.01 && r.max_curve_to_data <= 0.01);
@@ -86,13 +99,23 @@ fn test_shapes_converge_with_corners_sharp() {
         }
     }
     // The corners of the closed shape are at θ = kπ/2: data indices 0, 16, 32, 48.
-    let f = fit(&closed_petals(1), true, &FitOptions::new(0.01)).unwrap();
+    let f = fit(
+        &closed_petals(1),
+        subdiv_fit::Closure::Closed,
+        &FitOptions::new(0.01),
+    )
+    .unwrap();
     for corner in [0, 16, 32, 48] {
         let j = f.fitting.iter().position(|&i| i == corner).unwrap();
         assert!(f.curve.sharp()[j], "corner {corner}");
     }
     // The open shape's kinks at data indices 22 and 44, and its ends.
-    let f = fit(&open_wave(1), false, &FitOptions::new(0.01)).unwrap();
+    let f = fit(
+        &open_wave(1),
+        subdiv_fit::Closure::Open,
+        &FitOptions::new(0.01),
+    )
+    .unwrap();
     for corner in [0, 22, 44, 65] {
         let j = f.fitting.iter().position(|&i| i == corner).unwrap();
         assert!(f.curve.sharp()[j], "corner {corner}");
@@ -156,7 +179,7 @@ fn one_sided_measure_misses_a_bulge_that_two_sided_catches() {
         sharp_angle: 0.0,
         ..FitOptions::paper(tol)
     };
-    let f = fit(&data, true, &paper).unwrap();
+    let f = fit(&data, subdiv_fit::Closure::Closed, &paper).unwrap();
     let r = f.last().unwrap();
     assert!(r.max_data_to_curve <= tol);
     assert!(r.max_curve_to_data > 2.0 * tol, "{r:?}");
@@ -165,7 +188,7 @@ fn one_sided_measure_misses_a_bulge_that_two_sided_catches() {
         ..paper
     };
     assert!(matches!(
-        fit(&data, true, &ours),
+        fit(&data, subdiv_fit::Closure::Closed, &ours),
         Err(SubdivFitError::NoConvergence { .. })
     ));
 }
@@ -175,30 +198,30 @@ fn bad_input_gives_typed_errors() {
     let ok = closed_petals(1);
     let o = FitOptions::new(0.01);
     assert!(matches!(
-        fit(&ok[..2], false, &o),
+        fit(&ok[..2], subdiv_fit::Closure::Open, &o),
         Err(SubdivFitError::TooFewPoints { got: 2, .. })
     ));
     let mut nan = ok.clone();
     nan[5][0] = f64::NAN;
     assert!(matches!(
-        fit(&nan, true, &o),
+        fit(&nan, subdiv_fit::Closure::Closed, &o),
         Err(SubdivFitError::NonFinite { index: 5 })
     ));
     let mut dup = ok.clone();
     dup[7] = dup[6];
     assert!(matches!(
-        fit(&dup, true, &o),
+        fit(&dup, subdiv_fit::Closure::Closed, &o),
         Err(SubdivFitError::DuplicatePoint { index: 6, next: 7 })
     ));
     let mut wrap = ok.clone();
     wrap.push(wrap[0]);
     assert!(matches!(
-        fit(&wrap, true, &o),
+        fit(&wrap, subdiv_fit::Closure::Closed, &o),
         Err(SubdivFitError::DuplicatePoint { next: 0, .. })
     ));
     for t in [0.0, -1.0, f64::NAN, f64::INFINITY] {
         assert!(matches!(
-            fit(&ok, true, &FitOptions::new(t)),
+            fit(&ok, subdiv_fit::Closure::Closed, &FitOptions::new(t)),
             Err(SubdivFitError::InvalidTolerance { .. })
         ));
     }
@@ -207,7 +230,7 @@ fn bad_input_gives_typed_errors() {
         ..o
     };
     assert!(matches!(
-        fit(&ok, true, &bad),
+        fit(&ok, subdiv_fit::Closure::Closed, &bad),
         Err(SubdivFitError::InvalidOption {
             name: "sharp_angle",
             ..
@@ -215,7 +238,7 @@ fn bad_input_gives_typed_errors() {
     ));
     let capped = FitOptions { max_rounds: 0, ..o };
     assert!(matches!(
-        fit(&ok, true, &capped),
+        fit(&ok, subdiv_fit::Closure::Closed, &capped),
         Err(SubdivFitError::NoConvergence { rounds: 0, .. })
     ));
 }
@@ -229,8 +252,8 @@ fn bisection_beats_max_error_insertion() {
         insertion: Insertion::MaxError,
         ..FitOptions::new(0.01)
     };
-    let m = fit(&data, false, &literal).unwrap();
-    let b = fit(&data, false, &FitOptions::new(0.01)).unwrap();
+    let m = fit(&data, subdiv_fit::Closure::Open, &literal).unwrap();
+    let b = fit(&data, subdiv_fit::Closure::Open, &FitOptions::new(0.01)).unwrap();
     all_within(&data, &m, 0.01);
     all_within(&data, &b, 0.01);
     assert!(b.rounds() < m.rounds(), "{} vs {}", b.rounds(), m.rounds());
@@ -246,7 +269,7 @@ fn converges_cleanly(data: &[Vector2], mode: FitMode, max_rounds: usize) {
         mode,
         ..FitOptions::new(tol)
     };
-    let f = fit(data, true, &opts).unwrap();
+    let f = fit(data, subdiv_fit::Closure::Closed, &opts).unwrap();
     let r = f.last().unwrap();
     assert!(
         r.max_data_to_curve <= tol && r.max_curve_to_data <= tol,
@@ -319,7 +342,7 @@ fn fits_space_curves() {
             )
         })
         .collect();
-    let f = fit(&data, true, &FitOptions::new(0.01)).unwrap();
+    let f = fit(&data, subdiv_fit::Closure::Closed, &FitOptions::new(0.01)).unwrap();
     let r = f.last().unwrap();
     assert!(r.max_data_to_curve <= 0.01 && r.max_curve_to_data <= 0.01);
     for corner in [0, 16, 32, 48] {

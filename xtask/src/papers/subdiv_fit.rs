@@ -76,7 +76,15 @@ fn fit_table() -> Result<Table, DynError> {
     let mut rows = Vec::new();
     for (name, data, closed, paper_rounds) in shapes(1) {
         for (cfg, opts) in configs() {
-            let f = fit(&data, closed, &opts)?;
+            let f = fit(
+                &data,
+                if closed {
+                    subdiv_fit::Closure::Closed
+                } else {
+                    subdiv_fit::Closure::Open
+                },
+                &opts,
+            )?;
             let r = f.last().ok_or("empty report")?;
             let sharp0 = f.initial.len();
             let sharp_count = f.curve.sharp().iter().filter(|s| **s).count();
@@ -126,7 +134,17 @@ fn scaling_table() -> Result<Table, DynError> {
         );
         for (name, data, closed, _) in shapes(density).into_iter().chain([rippled]) {
             let opts = FitOptions::new(TOL);
-            let (f, ms) = median_ms(5, || Ok(fit(&data, closed, &opts)?))?;
+            let (f, ms) = median_ms(5, || {
+                Ok(fit(
+                    &data,
+                    if closed {
+                        subdiv_fit::Closure::Closed
+                    } else {
+                        subdiv_fit::Closure::Open
+                    },
+                    &opts,
+                )?)
+            })?;
             let r = f.last().ok_or("empty report")?;
             writeln!(
                 md,
@@ -178,11 +196,23 @@ fn polygon(curve: &SubdivCurve<2>) -> Vec<(f64, f64)> {
 
 /// The curve after round 0 (initial fit) of a fit.
 fn initial_fit(data: &[Vector2], closed: bool) -> Result<(Fit<2>, SubdivCurve<2>), DynError> {
-    let f = fit(data, closed, &FitOptions::new(TOL))?;
+    let f = fit(
+        data,
+        if closed {
+            subdiv_fit::Closure::Closed
+        } else {
+            subdiv_fit::Closure::Open
+        },
+        &FitOptions::new(TOL),
+    )?;
     // Round 0 alone: the same initial points with a cap of 0 rounds and a huge tolerance.
     let first = fit(
         data,
-        closed,
+        if closed {
+            subdiv_fit::Closure::Closed
+        } else {
+            subdiv_fit::Closure::Open
+        },
         &FitOptions {
             tolerance: f64::MAX,
             ..FitOptions::new(TOL)
@@ -239,7 +269,7 @@ pub(crate) fn figures(dir: &Path) -> Result<Vec<PathBuf>, DynError> {
     let data = closed_petals(1);
     let k = discrete_curvature(&data, true);
     let curv: Vec<(f64, f64)> = k.iter().enumerate().map(|(i, v)| (i as f64, *v)).collect();
-    let f = fit(&data, true, &FitOptions::new(TOL))?;
+    let f = fit(&data, subdiv_fit::Closure::Closed, &FitOptions::new(TOL))?;
     let maxima: Vec<(f64, f64)> = f.initial.iter().map(|&i| (i as f64, k[i])).collect();
     out.push(
         Plot::new(

@@ -194,7 +194,17 @@ pub(crate) fn table() -> Result<Table, DynError> {
                 mode,
                 ..FitOptions::new(0.01)
             };
-            let (f, ms) = median_ms(REPS, || Ok(fit(&data, closed, &opts)?))?;
+            let (f, ms) = median_ms(REPS, || {
+                Ok(fit(
+                    &data,
+                    if closed {
+                        subdiv_fit::Closure::Closed
+                    } else {
+                        subdiv_fit::Closure::Open
+                    },
+                    &opts,
+                )?)
+            })?;
             let segs = f.curve.segment_count();
             let err = curve_two_sided(&f.curve, &data, closed)?;
             target = target.min(err);

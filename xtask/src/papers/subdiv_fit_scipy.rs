@@ -116,7 +116,17 @@ pub(crate) fn run() -> Result<(), DynError> {
                 mode,
                 ..FitOptions::new(TOL)
             };
-            let (f, ms) = median_ms(REPS, || Ok(fit(data, *closed, &opts)?))?;
+            let (f, ms) = median_ms(REPS, || {
+                Ok(fit(
+                    data,
+                    if *closed {
+                        subdiv_fit::Closure::Closed
+                    } else {
+                        subdiv_fit::Closure::Open
+                    },
+                    &opts,
+                )?)
+            })?;
             let err = curve_two_sided(&f.curve, data, *closed)?;
             ours.push((f.curve.points().len(), err, ms));
         }

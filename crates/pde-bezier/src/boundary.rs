@@ -1,7 +1,7 @@
 //! Boundary data: clamped least-squares fit of side curves into the side's spline space, and
 //! the control-point rows they fix.
 
-use crate::error::Error;
+use crate::error::PdeError;
 use crate::problem::SideCurve;
 use crate::space::Space;
 use bez_core::Vector3;
@@ -22,10 +22,10 @@ pub(crate) fn fit(
     space: &Space,
     clamp_start: usize,
     clamp_end: usize,
-) -> Result<Fitted, Error> {
+) -> Result<Fitted, PdeError> {
     let n = space.n_coef;
     if clamp_start + clamp_end > n {
-        return Err(Error::DegreeTooLow {
+        return Err(PdeError::DegreeTooLow {
             direction: side,
             degree: space.degree,
             needed: space.degree + clamp_start + clamp_end - n,
@@ -48,7 +48,7 @@ pub(crate) fn fit(
         };
         let block = DMatrix::from_fn(count, count, |a, b| d[(a, cols[b])]);
         let rhs = DMatrix::from_fn(count, 3, |a, c| jet[a][c]);
-        let sol = block.lu().solve(&rhs).ok_or(Error::SingularSystem {
+        let sol = block.lu().solve(&rhs).ok_or(PdeError::SingularSystem {
             method: "boundary clamping",
             unknowns: count,
             pivot_ratio: 0.0,
@@ -80,14 +80,14 @@ pub(crate) fn fit(
         let smax = svd.singular_values.max();
         let smin = svd.singular_values.min();
         if smin.is_nan() || smin <= 1e-10 * smax || ts.len() < free.len() {
-            return Err(Error::TooFewSamples {
+            return Err(PdeError::TooFewSamples {
                 side,
                 what: "samples",
                 given: ts.len(),
                 needed: free.len() + clamp_start + clamp_end,
             });
         }
-        let x = svd.solve(&b, 0.0).map_err(|_| Error::SingularSystem {
+        let x = svd.solve(&b, 0.0).map_err(|_| PdeError::SingularSystem {
             method: "boundary fit",
             unknowns: free.len(),
             pivot_ratio: smin / smax,
@@ -106,9 +106,9 @@ pub(crate) fn fit(
     Ok(Fitted { coefs, error })
 }
 
-fn check_finite(v: &Vector3) -> Result<(), Error> {
+fn check_finite(v: &Vector3) -> Result<(), PdeError> {
     match v.iter().find(|x| !x.is_finite()) {
-        Some(&value) => Err(Error::NonFinite {
+        Some(&value) => Err(PdeError::NonFinite {
             what: "boundary sample",
             value,
         }),
@@ -121,7 +121,7 @@ fn samples(
     curve: &SideCurve,
     space: &Space,
     count: usize,
-) -> Result<(Vec<f64>, Vec<Vector3>), Error> {
+) -> Result<(Vec<f64>, Vec<Vector3>), PdeError> {
     let uniform =
         |count: usize| -> Vec<f64> { (0..count).map(|i| i as f64 / (count - 1) as f64).collect() };
     let out = match curve {
@@ -133,7 +133,7 @@ fn samples(
         }
         SideCurve::Pieces(pieces) => {
             if pieces.len() != space.pieces.len() {
-                return Err(Error::PieceCount {
+                return Err(PdeError::PieceCount {
                     side,
                     given: pieces.len(),
                     expected: space.pieces.len(),
@@ -154,7 +154,7 @@ fn samples(
         }
         SideCurve::Sampled { values, .. } => {
             if values.len() < 2 {
-                return Err(Error::TooFewSamples {
+                return Err(PdeError::TooFewSamples {
                     side,
                     what: "samples",
                     given: values.len(),
@@ -175,7 +175,7 @@ fn jet(
     curve: &SideCurve,
     at_end: bool,
     count: usize,
-) -> Result<Vec<Vector3>, Error> {
+) -> Result<Vec<Vector3>, PdeError> {
     let t = if at_end { 1.0 } else { 0.0 };
     let out = match curve {
         SideCurve::Bezier(c) => c.eval_derivatives(t, count - 1)?,
@@ -186,7 +186,7 @@ fn jet(
                 pieces.first()
             };
             let Some(piece) = piece else {
-                return Err(Error::PieceCount {
+                return Err(PdeError::PieceCount {
                     side,
                     given: 0,
                     expected: 1,
@@ -205,7 +205,7 @@ fn jet(
         } => {
             let jet = if at_end { end_jet } else { start_jet };
             if jet.len() < count {
-                return Err(Error::TooFewSamples {
+                return Err(PdeError::TooFewSamples {
                     side,
                     what: "end derivatives",
                     given: jet.len(),

@@ -4,7 +4,7 @@
 //! are described in one sentence each. Every choice made here is listed in the crate's paper
 //! document: the swept angle θ, the side conditions, the patch grids and the continuity r.
 
-use crate::error::Error;
+use crate::error::PdeError;
 use crate::problem::{Discretization, Operator, Problem, Side, SideCurve};
 use bez_core::Vector3;
 use std::f64::consts::PI;
@@ -236,10 +236,10 @@ fn problem(operator: Operator, sides: [Side; 4]) -> Problem {
 /// solution; every side is fitted to a quintic by clamped least squares.
 ///
 /// # Errors
-/// [`Error::NonFinite`] for a non-finite or zero θ.
-pub fn circle_sphere_blend(a: f64, theta: f64) -> Result<Case, Error> {
+/// [`PdeError::NonFinite`] for a non-finite or zero θ.
+pub fn circle_sphere_blend(a: f64, theta: f64) -> Result<Case, PdeError> {
     if !(theta.is_finite() && a.is_finite()) || theta == 0.0 {
-        return Err(Error::NonFinite {
+        return Err(PdeError::NonFinite {
             what: "swept angle",
             value: theta,
         });
@@ -276,7 +276,7 @@ fn angle_label(theta: f64) -> String {
 ///
 /// # Errors
 /// None in practice (the operator is valid).
-pub fn vase(patches_u: usize, patches_v: usize) -> Result<Case, Error> {
+pub fn vase(patches_u: usize, patches_v: usize) -> Result<Case, PdeError> {
     let exact = Exact::Vase;
     Ok(Case {
         label: format!("Fig. 3, {patches_u}x{patches_v} C2"),
@@ -295,7 +295,7 @@ pub fn vase(patches_u: usize, patches_v: usize) -> Result<Case, Error> {
 ///
 /// # Errors
 /// None in practice.
-pub fn cylinder_plane(patches_u: usize, patches_v: usize) -> Result<Case, Error> {
+pub fn cylinder_plane(patches_u: usize, patches_v: usize) -> Result<Case, PdeError> {
     let exact = Exact::CylinderPlane;
     Ok(Case {
         label: format!("Fig. 4, {patches_u}x{patches_v} C4"),
@@ -314,7 +314,7 @@ pub fn cylinder_plane(patches_u: usize, patches_v: usize) -> Result<Case, Error>
 ///
 /// # Errors
 /// None in practice.
-pub fn enneper(k: u32, patches_u: usize, patches_v: usize) -> Result<Case, Error> {
+pub fn enneper(k: u32, patches_u: usize, patches_v: usize) -> Result<Case, PdeError> {
     let exact = Exact::Enneper { k };
     Ok(Case {
         label: format!("Fig. 5, k = {k}, {patches_u}x{patches_v} C2"),
@@ -343,7 +343,7 @@ fn grid(degree: usize, patches_u: usize, patches_v: usize, smoothness: usize) ->
 ///
 /// # Errors
 /// None in practice.
-pub fn paper_cases() -> Result<Vec<Case>, Error> {
+pub fn paper_cases() -> Result<Vec<Case>, PdeError> {
     let mut out = Vec::new();
     for a in [1.0, 3.0] {
         for theta in [1.0, PI / 2.0, PI] {

@@ -3,7 +3,7 @@
 /// Everything that can go wrong when describing or solving a PDE-surface problem.
 #[derive(Debug, Clone, PartialEq, thiserror::Error)]
 #[non_exhaustive]
-pub enum Error {
+pub enum PdeError {
     /// An error of the Bézier kernel (invalid control points, parameters out of range).
     #[error(transparent)]
     Core(#[from] bez_core::CoreError),

@@ -1,6 +1,6 @@
 //! A uniform grid of Bézier patches (the approximating surface) and error norms.
 
-use crate::error::Error;
+use crate::error::PdeError;
 use bez_core::{BezierSurface, Vector3};
 
 /// A uniform grid of Bézier patches over [0, 1]²: patch (i, j) covers
@@ -64,11 +64,11 @@ impl PatchGrid {
     /// Evaluates the piecewise surface at (u, v) ∈ [0, 1]².
     ///
     /// # Errors
-    /// [`Error::ParameterOutOfRange`] outside [0, 1]².
-    pub fn eval(&self, u: f64, v: f64) -> Result<Vector3, Error> {
+    /// [`PdeError::ParameterOutOfRange`] outside [0, 1]².
+    pub fn eval(&self, u: f64, v: f64) -> Result<Vector3, PdeError> {
         for t in [u, v] {
             if !(0.0..=1.0).contains(&t) {
-                return Err(Error::ParameterOutOfRange { value: t });
+                return Err(PdeError::ParameterOutOfRange { value: t });
             }
         }
         let (i, s) = locate(u, self.patches_u);
@@ -76,15 +76,15 @@ impl PatchGrid {
         Ok(self.patches[i * self.patches_v + j].eval(s, t)?)
     }
 
-    /// Error norms against an exact solution on the (τ+1)² grid (the paper uses τ = 100).
+    /// PdeError norms against an exact solution on the (τ+1)² grid (the paper uses τ = 100).
     ///
     /// # Errors
-    /// [`Error::NonFinite`] when the exact solution returns a non-finite value.
+    /// [`PdeError::NonFinite`] when the exact solution returns a non-finite value.
     pub fn error_norms(
         &self,
         exact: impl Fn(f64, f64) -> Vector3,
         tau: usize,
-    ) -> Result<ErrorNorms, Error> {
+    ) -> Result<ErrorNorms, PdeError> {
         let tau = tau.max(1);
         let mut sum = 0.0;
         let mut max: f64 = 0.0;
@@ -93,7 +93,7 @@ impl PatchGrid {
                 let (u, v) = (i as f64 / tau as f64, j as f64 / tau as f64);
                 let e = (exact(u, v) - self.eval(u, v)?).norm();
                 if !e.is_finite() {
-                    return Err(Error::NonFinite {
+                    return Err(PdeError::NonFinite {
                         what: "exact solution",
                         value: e,
                     });

@@ -3,12 +3,12 @@
 //!
 //! Entity 128 lists control points with u varying fastest (the transpose of STEP's order).
 
-use crate::error::Error;
+use crate::error::PdeError;
 use crate::spline_surface::BSplineSurface;
 use bez_core::Vector3;
 
-fn iges_err(what: impl Into<String>) -> Error {
-    Error::Iges { what: what.into() }
+fn iges_err(what: impl Into<String>) -> PdeError {
+    PdeError::Iges { what: what.into() }
 }
 
 fn real(x: f64) -> String {
@@ -48,7 +48,7 @@ fn with_delims(items: &[String]) -> Vec<String> {
 ///
 /// # Errors
 /// The errors of [`BSplineSurface::validate`].
-pub fn write_iges(surface: &BSplineSurface, name: &str) -> Result<String, Error> {
+pub fn write_iges(surface: &BSplineSurface, name: &str) -> Result<String, PdeError> {
     surface.validate()?;
     let name: String = name
         .chars()
@@ -164,7 +164,7 @@ pub fn write_iges(surface: &BSplineSurface, name: &str) -> Result<String, Error>
     Ok(out)
 }
 
-fn parse_real(s: &str) -> Result<f64, Error> {
+fn parse_real(s: &str) -> Result<f64, PdeError> {
     s.trim()
         .replace(['D', 'd'], "E")
         .parse()
@@ -174,8 +174,8 @@ fn parse_real(s: &str) -> Result<f64, Error> {
 /// Reads the first entity 128 of an IGES file written by [`write_iges`] (unit weights).
 ///
 /// # Errors
-/// [`Error::Iges`] for malformed lines, a missing entity, non-unit weights or bad counts.
-pub fn read_iges(text: &str) -> Result<BSplineSurface, Error> {
+/// [`PdeError::Iges`] for malformed lines, a missing entity, non-unit weights or bad counts.
+pub fn read_iges(text: &str) -> Result<BSplineSurface, PdeError> {
     let mut data = String::new();
     let mut saw_terminate = false;
     for line in text.lines() {
@@ -200,7 +200,7 @@ pub fn read_iges(text: &str) -> Result<BSplineSurface, Error> {
         .next()
         .ok_or_else(|| iges_err("no parameter record"))?;
     let tokens: Vec<&str> = record.split(',').map(str::trim).collect();
-    let int = |i: usize| -> Result<usize, Error> {
+    let int = |i: usize| -> Result<usize, PdeError> {
         tokens
             .get(i)
             .and_then(|t| t.parse().ok())
@@ -212,7 +212,7 @@ pub fn read_iges(text: &str) -> Result<BSplineSurface, Error> {
     let (k1, k2, m1, m2) = (int(1)?, int(2)?, int(3)?, int(4)?);
     let (cu, cv) = (k1 + 1, k2 + 1);
     let mut pos = 10;
-    let mut take = |count: usize| -> Result<Vec<f64>, Error> {
+    let mut take = |count: usize| -> Result<Vec<f64>, PdeError> {
         let slice = tokens
             .get(pos..pos + count)
             .ok_or_else(|| iges_err("parameter record too short"))?;

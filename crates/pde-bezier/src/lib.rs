@@ -38,7 +38,7 @@
 //! let p = sol.surface.eval(0.3, 0.8)?;
 //! assert!((p - Vector3::new(0.3, 0.8, 0.09 - 0.64)).norm() < 1e-12);
 //! assert!(sol.residual_bound < 1e-10);
-//! # Ok::<(), pde_bezier::Error>(())
+//! # Ok::<(), pde_bezier::PdeError>(())
 //! ```
 
 mod bernstein_ops;
@@ -55,7 +55,7 @@ mod space;
 mod spline_surface;
 mod step;
 
-pub use error::Error;
+pub use error::PdeError;
 pub use grid::{ErrorNorms, PatchGrid};
 pub use iges::{read_iges, write_iges};
 pub use manufactured::{apply_operator, side_of};

@@ -3,7 +3,7 @@
 //! If X has a bidegree within the trial space, every method must return X to rounding
 //! (polynomial exactness), which is the basic test of every solver in this crate.
 
-use crate::error::Error;
+use crate::error::PdeError;
 use crate::problem::{Operator, Problem, Side, SideCurve};
 use bez_core::{BezierSurface, Vector3};
 
@@ -11,7 +11,7 @@ use bez_core::{BezierSurface, Vector3};
 ///
 /// # Errors
 /// Kernel errors only (none for a valid surface).
-pub fn apply_operator(op: &Operator, x: &BezierSurface<3>) -> Result<BezierSurface<3>, Error> {
+pub fn apply_operator(op: &Operator, x: &BezierSurface<3>) -> Result<BezierSurface<3>, PdeError> {
     let parts: Vec<(f64, BezierSurface<3>)> = op
         .terms()
         .iter()
@@ -36,7 +36,7 @@ pub fn apply_operator(op: &Operator, x: &BezierSurface<3>) -> Result<BezierSurfa
 ///
 /// # Errors
 /// Kernel errors only.
-pub fn side_of(x: &BezierSurface<3>, side: usize, count: usize) -> Result<Side, Error> {
+pub fn side_of(x: &BezierSurface<3>, side: usize, count: usize) -> Result<Side, PdeError> {
     let t = if side % 2 == 1 { 1.0 } else { 0.0 };
     let curves = (0..count)
         .map(|i| {
@@ -47,7 +47,7 @@ pub fn side_of(x: &BezierSurface<3>, side: usize, count: usize) -> Result<Side, 
             };
             Ok(SideCurve::Bezier(c))
         })
-        .collect::<Result<Vec<_>, Error>>()?;
+        .collect::<Result<Vec<_>, PdeError>>()?;
     Ok(Side::Fixed(curves))
 }
 
@@ -57,7 +57,7 @@ impl Problem {
     ///
     /// # Errors
     /// Kernel errors only.
-    pub fn manufactured(op: Operator, x: &BezierSurface<3>) -> Result<Self, Error> {
+    pub fn manufactured(op: Operator, x: &BezierSurface<3>) -> Result<Self, PdeError> {
         let half = op.order() / 2;
         Ok(Self {
             rhs: Some(apply_operator(&op, x)?),

@@ -1,6 +1,6 @@
 //! The problem description: operator, right-hand side, boundary data, discretization.
 
-use crate::error::Error;
+use crate::error::PdeError;
 use bez_core::{BezierCurve, BezierSurface, Vector3};
 
 /// One term c·∂^{du+dv}/∂u^{du}∂v^{dv} of the operator L (Xu & Wang 2007, Sec. 1).
@@ -29,23 +29,23 @@ impl Operator {
     /// Validates and wraps the terms.
     ///
     /// # Errors
-    /// [`Error::EmptyOperator`], [`Error::UnsupportedOrder`] for an odd, zero or > 6 order,
-    /// [`Error::NonFinite`] for a non-finite coefficient.
-    pub fn new(terms: Vec<Term>) -> Result<Self, Error> {
+    /// [`PdeError::EmptyOperator`], [`PdeError::UnsupportedOrder`] for an odd, zero or > 6 order,
+    /// [`PdeError::NonFinite`] for a non-finite coefficient.
+    pub fn new(terms: Vec<Term>) -> Result<Self, PdeError> {
         if terms.is_empty() {
-            return Err(Error::EmptyOperator);
+            return Err(PdeError::EmptyOperator);
         }
         for t in &terms {
             let order = t.du + t.dv;
             if order == 0 || order % 2 == 1 || order > 6 {
-                return Err(Error::UnsupportedOrder {
+                return Err(PdeError::UnsupportedOrder {
                     du: t.du,
                     dv: t.dv,
                     order,
                 });
             }
             if !t.coeff.is_finite() {
-                return Err(Error::NonFinite {
+                return Err(PdeError::NonFinite {
                     what: "operator coefficient",
                     value: t.coeff,
                 });
@@ -57,8 +57,8 @@ impl Operator {
     /// ∂²/∂u² + a ∂²/∂v², the operator of the paper's problem (5) and of the vase (with 5, 1).
     ///
     /// # Errors
-    /// [`Error::NonFinite`] when a coefficient is not finite.
-    pub fn second_order(cu: f64, cv: f64) -> Result<Self, Error> {
+    /// [`PdeError::NonFinite`] when a coefficient is not finite.
+    pub fn second_order(cu: f64, cv: f64) -> Result<Self, PdeError> {
         Self::new(vec![
             Term {
                 coeff: cu,
@@ -76,8 +76,8 @@ impl Operator {
     /// Bloor and Wilson's (∂²/∂u² + a² ∂²/∂v²)² = ∂⁴/∂u⁴ + 2a² ∂⁴/∂u²∂v² + a⁴ ∂⁴/∂v⁴.
     ///
     /// # Errors
-    /// [`Error::NonFinite`] when a is not finite.
-    pub fn bloor_wilson(a: f64) -> Result<Self, Error> {
+    /// [`PdeError::NonFinite`] when a is not finite.
+    pub fn bloor_wilson(a: f64) -> Result<Self, PdeError> {
         let a2 = a * a;
         Self::new(vec![
             Term {

@@ -2,7 +2,7 @@
 
 use crate::bernstein_ops::{bernstein_values, derivative_matrix, elevation_matrix, gram_matrix};
 use crate::boundary::fit;
-use crate::error::Error;
+use crate::error::PdeError;
 use crate::grid::PatchGrid;
 use crate::problem::{Discretization, Problem, Side};
 use crate::space::Space;
@@ -104,14 +104,14 @@ impl Assembly {
     /// Assembles `problem` on the trial space `disc`.
     ///
     /// # Errors
-    /// [`Error::PeriodicMismatch`], [`Error::SideDataCount`], [`Error::DegreeTooLow`],
-    /// [`Error::Smoothness`] (r < k − 1 between patches), [`Error::NoPatches`], boundary-fit
-    /// errors and [`Error::CornerMismatch`] when adjacent sides disagree.
-    pub fn new(problem: &Problem, disc: &Discretization) -> Result<Self, Error> {
+    /// [`PdeError::PeriodicMismatch`], [`PdeError::SideDataCount`], [`PdeError::DegreeTooLow`],
+    /// [`PdeError::Smoothness`] (r < k − 1 between patches), [`PdeError::NoPatches`], boundary-fit
+    /// errors and [`PdeError::CornerMismatch`] when adjacent sides disagree.
+    pub fn new(problem: &Problem, disc: &Discretization) -> Result<Self, PdeError> {
         let k = problem.operator.order();
         let half = k / 2;
         if disc.patches_u == 0 || disc.patches_v == 0 {
-            return Err(Error::NoPatches {
+            return Err(PdeError::NoPatches {
                 patches_u: disc.patches_u,
                 patches_v: disc.patches_v,
             });
@@ -121,7 +121,7 @@ impl Assembly {
             let a = matches!(sides[pair], Side::Periodic);
             let b = matches!(sides[pair + 1], Side::Periodic);
             if a != b {
-                return Err(Error::PeriodicMismatch {
+                return Err(PdeError::PeriodicMismatch {
                     side: if a { names[0] } else { names[1] },
                 });
             }
@@ -130,7 +130,7 @@ impl Assembly {
             if let Side::Fixed(curves) = side
                 && curves.len() != half
             {
-                return Err(Error::SideDataCount {
+                return Err(PdeError::SideDataCount {
                     side: SIDE_NAMES[s],
                     given: curves.len(),
                     expected: half,
@@ -157,7 +157,7 @@ impl Assembly {
             ),
         ] {
             if (patches > 1 || periodic) && smooth + 1 < k {
-                return Err(Error::Smoothness {
+                return Err(PdeError::Smoothness {
                     direction: dir,
                     smoothness: smooth,
                     min: k - 1,
@@ -187,7 +187,7 @@ impl Assembly {
             let rows = usize::from(matches!(a, Side::Fixed(_))) * half
                 + usize::from(matches!(b, Side::Fixed(_))) * half;
             if rows > space.n_coef {
-                return Err(Error::DegreeTooLow {
+                return Err(PdeError::DegreeTooLow {
                     direction: dir,
                     degree: space.degree,
                     needed: space.degree + rows - space.n_coef,
@@ -278,8 +278,8 @@ impl Assembly {
     /// Solves for the free control points with `method` (three right-hand sides x, y, z).
     ///
     /// # Errors
-    /// [`Error::SingularSystem`] when the system is singular or too ill-conditioned.
-    pub fn solve(&self, method: Method) -> Result<Solution, Error> {
+    /// [`PdeError::SingularSystem`] when the system is singular or too ill-conditioned.
+    pub fn solve(&self, method: Method) -> Result<Solution, PdeError> {
         let n_all = self.fixed.len();
         let mut index = vec![usize::MAX; n_all];
         let mut free = Vec::new();
@@ -359,7 +359,7 @@ impl Assembly {
         &self,
         index: &[usize],
         nf: usize,
-    ) -> Result<(DMatrix<f64>, Rhs3), Error> {
+    ) -> Result<(DMatrix<f64>, Rhs3), PdeError> {
         let nv = self.sv.n_coef;
         let mut a = DMatrix::<f64>::zeros(nf, nf);
         let mut b = OMatrix::<f64, Dyn, U3>::zeros(nf);
@@ -394,7 +394,7 @@ impl Assembly {
             row += 1;
         }
         if row != nf {
-            return Err(Error::SingularSystem {
+            return Err(PdeError::SingularSystem {
                 method: "collocation",
                 unknowns: nf,
                 pivot_ratio: 0.0,
@@ -403,7 +403,7 @@ impl Assembly {
         Ok((a, b))
     }
 
-    fn finish(&self, coefs: &[Vector3], unknowns: usize) -> Result<Solution, Error> {
+    fn finish(&self, coefs: &[Vector3], unknowns: usize) -> Result<Solution, PdeError> {
         let weight = self.su.width() * self.sv.width();
         let mut objective = 0.0;
         let mut bound: f64 = 0.0;
@@ -473,7 +473,11 @@ impl Assembly {
 ///
 /// # Errors
 /// Those of [`Assembly::new`] and [`Assembly::solve`].
-pub fn solve(problem: &Problem, disc: &Discretization, method: Method) -> Result<Solution, Error> {
+pub fn solve(
+    problem: &Problem,
+    disc: &Discretization,
+    method: Method,
+) -> Result<Solution, PdeError> {
     Assembly::new(problem, disc)?.solve(method)
 }
 
@@ -482,9 +486,9 @@ fn solve_spd(
     a: DMatrix<f64>,
     b: &OMatrix<f64, Dyn, U3>,
     method: Method,
-) -> Result<OMatrix<f64, Dyn, U3>, Error> {
+) -> Result<OMatrix<f64, Dyn, U3>, PdeError> {
     let n = a.nrows();
-    let singular = |ratio: f64| Error::SingularSystem {
+    let singular = |ratio: f64| PdeError::SingularSystem {
         method: method.name(),
         unknowns: n,
         pivot_ratio: ratio,
@@ -518,13 +522,13 @@ fn solve_general(
     a: DMatrix<f64>,
     b: &OMatrix<f64, Dyn, U3>,
     method: Method,
-) -> Result<OMatrix<f64, Dyn, U3>, Error> {
+) -> Result<OMatrix<f64, Dyn, U3>, PdeError> {
     let n = a.nrows();
     let lu = a.lu();
     let u = lu.u();
     let diag = u.diagonal().map(f64::abs);
     let ratio = diag.min() / diag.max();
-    let singular = Error::SingularSystem {
+    let singular = PdeError::SingularSystem {
         method: method.name(),
         unknowns: n,
         pivot_ratio: ratio,
@@ -544,16 +548,16 @@ fn rhs_on_patch(
     pv: usize,
     l: usize,
     r: usize,
-) -> Result<OMatrix<f64, Dyn, U3>, Error> {
+) -> Result<OMatrix<f64, Dyn, U3>, PdeError> {
     let count = (l + 1) * (r + 1);
     let Some(f) = rhs else {
         return Ok(OMatrix::<f64, Dyn, U3>::zeros(count));
     };
-    let restrict_u = |s: &BezierSurface<3>, a: f64, b: f64| -> Result<BezierSurface<3>, Error> {
+    let restrict_u = |s: &BezierSurface<3>, a: f64, b: f64| -> Result<BezierSurface<3>, PdeError> {
         let s = if b < 1.0 { s.split_u(b)?.0 } else { s.clone() };
         Ok(if a > 0.0 { s.split_u(a / b)?.1 } else { s })
     };
-    let restrict_v = |s: &BezierSurface<3>, a: f64, b: f64| -> Result<BezierSurface<3>, Error> {
+    let restrict_v = |s: &BezierSurface<3>, a: f64, b: f64| -> Result<BezierSurface<3>, PdeError> {
         let s = if b < 1.0 { s.split_v(b)?.0 } else { s.clone() };
         Ok(if a > 0.0 { s.split_v(a / b)?.1 } else { s })
     };
@@ -567,7 +571,7 @@ fn rhs_on_patch(
 }
 
 /// The control points fixed by the sides, with corner consistency checked.
-fn fixed_points(problem: &Problem, su: &Space, sv: &Space, half: usize) -> Result<Fixed, Error> {
+fn fixed_points(problem: &Problem, su: &Space, sv: &Space, half: usize) -> Result<Fixed, PdeError> {
     let (nu, nv) = (su.n_coef, sv.n_coef);
     let mut fixed: Vec<Option<(Vector3, usize)>> = vec![None; nu * nv];
     let mut fit_error: f64 = 0.0;
@@ -607,7 +611,7 @@ fn fixed_points(problem: &Problem, su: &Space, sv: &Space, half: usize) -> Resul
         let lu = block.lu();
         for t in 0..along.n_coef {
             let rhs = DMatrix::from_fn(half, 3, |i, c| fitted.get(i).map_or(0.0, |f| f[t][c]));
-            let sol = lu.solve(&rhs).ok_or(Error::SingularSystem {
+            let sol = lu.solve(&rhs).ok_or(PdeError::SingularSystem {
                 method: "boundary rows",
                 unknowns: half,
                 pivot_ratio: 0.0,
@@ -621,7 +625,7 @@ fn fixed_points(problem: &Problem, su: &Space, sv: &Space, half: usize) -> Resul
                         let gap = (*prev - value).norm();
                         let scale = 1.0 + prev.norm().max(value.norm());
                         if gap > 1e-8 * scale {
-                            return Err(Error::CornerMismatch {
+                            return Err(PdeError::CornerMismatch {
                                 first: SIDE_NAMES[*by],
                                 second: SIDE_NAMES[s],
                                 i,

@@ -8,7 +8,7 @@
 //! by expressing the first r + 1 coefficients through the last r + 1.
 
 use crate::bernstein_ops::bernstein_values;
-use crate::error::Error;
+use crate::error::PdeError;
 use bez_core::binomial;
 use nalgebra::DMatrix;
 
@@ -46,10 +46,10 @@ impl Space {
         pieces: usize,
         smoothness: usize,
         periodic: bool,
-    ) -> Result<Self, Error> {
+    ) -> Result<Self, PdeError> {
         let n = degree;
         if n == 0 {
-            return Err(Error::DegreeTooLow {
+            return Err(PdeError::DegreeTooLow {
                 direction,
                 degree: n,
                 needed: 1,
@@ -57,7 +57,7 @@ impl Space {
             });
         }
         if (pieces > 1 || periodic) && smoothness >= n {
-            return Err(Error::Smoothness {
+            return Err(PdeError::Smoothness {
                 direction,
                 smoothness,
                 min: 0,
@@ -158,11 +158,11 @@ impl Space {
 
     /// Closes the clamped space periodically with C^r at the seam: the first r + 1
     /// coefficients become T · (last r + 1), T = D₀⁻¹ D₁ from the end derivatives.
-    fn into_periodic(self, direction: &'static str, smoothness: usize) -> Result<Self, Error> {
+    fn into_periodic(self, direction: &'static str, smoothness: usize) -> Result<Self, PdeError> {
         let r1 = smoothness + 1;
         let n = self.n_coef;
         if n < 2 * r1 {
-            return Err(Error::DegreeTooLow {
+            return Err(PdeError::DegreeTooLow {
                 direction,
                 degree: self.degree,
                 needed: 2 * smoothness + 1,
@@ -174,7 +174,7 @@ impl Space {
             .end_derivatives(true, r1)
             .columns(n - r1, r1)
             .into_owned();
-        let t = d0.lu().solve(&d1).ok_or(Error::SingularSystem {
+        let t = d0.lu().solve(&d1).ok_or(PdeError::SingularSystem {
             method: "periodic closure",
             unknowns: r1,
             pivot_ratio: 0.0,
@@ -345,7 +345,7 @@ mod tests {
     fn periodic_space_rejects_too_few_coefficients() {
         assert!(matches!(
             Space::new("v", 3, 1, 2, true),
-            Err(Error::DegreeTooLow { .. })
+            Err(PdeError::DegreeTooLow { .. })
         ));
     }
 }

@@ -1,6 +1,6 @@
 //! The solution as one tensor-product B-spline surface (clamped knots), for CAD export.
 
-use crate::error::Error;
+use crate::error::PdeError;
 use bez_core::Vector3;
 
 /// A clamped tensor-product B-spline surface: degrees, full knot vectors and a row-major
@@ -39,9 +39,9 @@ impl BSplineSurface {
     /// Checks the shape: knot counts, non-decreasing knots, finite values.
     ///
     /// # Errors
-    /// [`Error::Core`] with a grid-shape error, [`Error::NonFinite`],
-    /// [`Error::DecreasingKnots`].
-    pub fn validate(&self) -> Result<(), Error> {
+    /// [`PdeError::Core`] with a grid-shape error, [`PdeError::NonFinite`],
+    /// [`PdeError::DecreasingKnots`].
+    pub fn validate(&self) -> Result<(), PdeError> {
         let (cu, cv) = (self.count_u(), self.count_v());
         if cu == 0 || cv == 0 || self.points.len() != cu * cv {
             return Err(bez_core::CoreError::GridShape {
@@ -54,13 +54,13 @@ impl BSplineSurface {
         }
         for (direction, k) in [("u", &self.knots_u), ("v", &self.knots_v)] {
             if let Some(&bad) = k.iter().find(|x| !x.is_finite()) {
-                return Err(Error::NonFinite {
+                return Err(PdeError::NonFinite {
                     what: "knot",
                     value: bad,
                 });
             }
             if let Some(index) = k.windows(2).position(|w| w[1] < w[0]) {
-                return Err(Error::DecreasingKnots {
+                return Err(PdeError::DecreasingKnots {
                     direction,
                     index: index + 1,
                 });
@@ -68,7 +68,7 @@ impl BSplineSurface {
         }
         for p in &self.points {
             if let Some(&bad) = p.iter().find(|x| !x.is_finite()) {
-                return Err(Error::NonFinite {
+                return Err(PdeError::NonFinite {
                     what: "control point coordinate",
                     value: bad,
                 });
@@ -80,8 +80,8 @@ impl BSplineSurface {
     /// Evaluates the surface at (u, v) ∈ [0, 1]² by the Cox–de Boor recurrence.
     ///
     /// # Errors
-    /// [`Error::ParameterOutOfRange`] outside the knot range.
-    pub fn eval(&self, u: f64, v: f64) -> Result<Vector3, Error> {
+    /// [`PdeError::ParameterOutOfRange`] outside the knot range.
+    pub fn eval(&self, u: f64, v: f64) -> Result<Vector3, PdeError> {
         let (iu, bu) = basis(&self.knots_u, self.degree_u, u)?;
         let (iv, bv) = basis(&self.knots_v, self.degree_v, v)?;
         let cv = self.count_v();
@@ -96,10 +96,10 @@ impl BSplineSurface {
 }
 
 /// The p + 1 nonzero basis functions at t and the index of the first.
-fn basis(knots: &[f64], p: usize, t: f64) -> Result<(usize, Vec<f64>), Error> {
+fn basis(knots: &[f64], p: usize, t: f64) -> Result<(usize, Vec<f64>), PdeError> {
     let n = knots.len().saturating_sub(p + 1);
     if n == 0 || !(knots[p]..=knots[n]).contains(&t) {
-        return Err(Error::ParameterOutOfRange { value: t });
+        return Err(PdeError::ParameterOutOfRange { value: t });
     }
     // Span: knots[span] ≤ t < knots[span+1], the last non-empty span at the right end.
     let mut span = p;

@@ -6,7 +6,7 @@
 //! u-outer and v-inner, reals with a decimal point and an upper-case exponent, no non-finite
 //! values.
 
-use crate::error::Error;
+use crate::error::PdeError;
 use crate::spline_surface::BSplineSurface;
 use bez_core::Vector3;
 use std::collections::HashMap;
@@ -48,7 +48,7 @@ fn list<T>(items: &[T], f: impl Fn(&T) -> String) -> String {
 ///
 /// # Errors
 /// The errors of [`BSplineSurface::validate`] (bad shape, non-finite values).
-pub fn write_step(surface: &BSplineSurface, name: &str) -> Result<String, Error> {
+pub fn write_step(surface: &BSplineSurface, name: &str) -> Result<String, PdeError> {
     surface.validate()?;
     let name: String = name.chars().filter(|c| *c != '\'' && *c != '\\').collect();
     let mut s = String::new();
@@ -146,8 +146,8 @@ enum Param {
     Unset,
 }
 
-fn step_err(what: impl Into<String>) -> Error {
-    Error::Step { what: what.into() }
+fn step_err(what: impl Into<String>) -> PdeError {
+    PdeError::Step { what: what.into() }
 }
 
 struct Parser<'a> {
@@ -162,7 +162,7 @@ impl Parser<'_> {
         }
     }
 
-    fn param(&mut self) -> Result<Param, Error> {
+    fn param(&mut self) -> Result<Param, PdeError> {
         self.skip_ws();
         let Some(&c) = self.s.get(self.pos) else {
             return Err(step_err("unexpected end of parameters"));
@@ -264,8 +264,8 @@ impl Parser<'_> {
 /// (non-rational, explicit knots; other entities are only checked for syntax).
 ///
 /// # Errors
-/// [`Error::Step`] for a syntax error, a missing entity or reference, or a malformed surface.
-pub fn read_step(text: &str) -> Result<BSplineSurface, Error> {
+/// [`PdeError::Step`] for a syntax error, a missing entity or reference, or a malformed surface.
+pub fn read_step(text: &str) -> Result<BSplineSurface, PdeError> {
     let start = text
         .find("DATA;")
         .ok_or_else(|| step_err("no DATA section"))?;
@@ -330,7 +330,7 @@ pub fn read_step(text: &str) -> Result<BSplineSurface, Error> {
         Param::Num(x) if *x >= 0.0 && x.fract() == 0.0 => Ok(*x as usize),
         _ => Err(bad()),
     };
-    let nums = |p: &Param| -> Result<Vec<f64>, Error> {
+    let nums = |p: &Param| -> Result<Vec<f64>, PdeError> {
         match p {
             Param::List(items) => items
                 .iter()
@@ -342,7 +342,7 @@ pub fn read_step(text: &str) -> Result<BSplineSurface, Error> {
             _ => Err(bad()),
         }
     };
-    let point = |id: usize| -> Result<Vector3, Error> {
+    let point = |id: usize| -> Result<Vector3, PdeError> {
         match entities.get(&id) {
             Some((n, p)) if n == "CARTESIAN_POINT" && p.len() == 2 => {
                 let c = nums(&p[1])?;
@@ -376,7 +376,7 @@ pub fn read_step(text: &str) -> Result<BSplineSurface, Error> {
             points.push(point(*id)?);
         }
     }
-    let expand = |mults: &Param, knots: &Param| -> Result<Vec<f64>, Error> {
+    let expand = |mults: &Param, knots: &Param| -> Result<Vec<f64>, PdeError> {
         let m = nums(mults)?;
         let k = nums(knots)?;
         if m.len() != k.len() {

@@ -3,7 +3,9 @@
 #![allow(clippy::unwrap_used, reason = "test helpers unwrap known-good inputs")]
 
 use bez_core::{BezierCurve, BezierSurface, Vector3};
-use pde_bezier::{Discretization, Error, Method, Operator, Problem, Side, SideCurve, Term, solve};
+use pde_bezier::{
+    Discretization, Method, Operator, PdeError, Problem, Side, SideCurve, Term, solve,
+};
 
 fn line(a: Vector3, b: Vector3) -> SideCurve {
     SideCurve::Bezier(BezierCurve::new(vec![a, b]).unwrap())
@@ -28,12 +30,15 @@ fn unit_square_problem() -> Problem {
 fn operator_rejects_odd_and_high_orders() {
     for (du, dv) in [(1, 0), (2, 1), (4, 4), (0, 0)] {
         let err = Operator::new(vec![Term { coeff: 1.0, du, dv }]).unwrap_err();
-        assert!(matches!(err, Error::UnsupportedOrder { .. }), "{du} {dv}");
+        assert!(
+            matches!(err, PdeError::UnsupportedOrder { .. }),
+            "{du} {dv}"
+        );
     }
-    assert_eq!(Operator::new(vec![]).unwrap_err(), Error::EmptyOperator);
+    assert_eq!(Operator::new(vec![]).unwrap_err(), PdeError::EmptyOperator);
     assert!(matches!(
         Operator::second_order(f64::NAN, 1.0),
-        Err(Error::NonFinite { .. })
+        Err(PdeError::NonFinite { .. })
     ));
 }
 
@@ -51,7 +56,7 @@ fn corner_mismatch_is_reported() {
     )
     .unwrap_err();
     assert!(
-        matches!(err, Error::CornerMismatch { i: 0, j: 0, .. }),
+        matches!(err, PdeError::CornerMismatch { i: 0, j: 0, .. }),
         "{err}"
     );
 }
@@ -63,7 +68,7 @@ fn wrong_side_data_count_is_reported() {
     let err = solve(&p, &Discretization::single(5, 5), Method::Galerkin).unwrap_err();
     assert!(matches!(
         err,
-        Error::SideDataCount {
+        PdeError::SideDataCount {
             expected: 2,
             given: 1,
             ..
@@ -82,7 +87,7 @@ fn degree_too_low_for_the_boundary_rows() {
     )
     .unwrap_err();
     assert!(
-        matches!(err, Error::DegreeTooLow { direction: "u", .. }),
+        matches!(err, PdeError::DegreeTooLow { direction: "u", .. }),
         "{err}"
     );
 }
@@ -100,13 +105,13 @@ fn low_continuity_is_rejected() {
         smoothness_v: 0,
     };
     let err = solve(&p, &disc, Method::BernsteinLeastSquares).unwrap_err();
-    assert!(matches!(err, Error::Smoothness { min: 3, .. }), "{err}");
+    assert!(matches!(err, PdeError::Smoothness { min: 3, .. }), "{err}");
     let disc = Discretization {
         smoothness_u: 5,
         ..disc
     };
     let err = solve(&p, &disc, Method::BernsteinLeastSquares).unwrap_err();
-    assert!(matches!(err, Error::Smoothness { .. }), "{err}");
+    assert!(matches!(err, PdeError::Smoothness { .. }), "{err}");
 }
 
 #[test]
@@ -119,7 +124,7 @@ fn underdetermined_problem_is_singular() {
     for method in Method::ALL {
         let err = solve(&p, &Discretization::single(4, 4), method).unwrap_err();
         assert!(
-            matches!(err, Error::SingularSystem { .. }),
+            matches!(err, PdeError::SingularSystem { .. }),
             "{method:?}: {err}"
         );
     }
@@ -130,7 +135,7 @@ fn periodic_mismatch_and_piece_count() {
     let mut p = unit_square_problem();
     p.v0 = Side::Periodic;
     let err = solve(&p, &Discretization::single(4, 4), Method::Galerkin).unwrap_err();
-    assert_eq!(err, Error::PeriodicMismatch { side: "v=0" });
+    assert_eq!(err, PdeError::PeriodicMismatch { side: "v=0" });
     let mut p = unit_square_problem();
     p.u0 = Side::Fixed(vec![SideCurve::Pieces(vec![
         BezierCurve::new(vec![Vector3::zeros(), Vector3::new(0.0, 1.0, 0.0)]).unwrap(),
@@ -144,7 +149,7 @@ fn periodic_mismatch_and_piece_count() {
     assert!(
         matches!(
             err,
-            Error::PieceCount {
+            PdeError::PieceCount {
                 given: 1,
                 expected: 2,
                 ..
@@ -158,7 +163,7 @@ fn periodic_mismatch_and_piece_count() {
     };
     assert!(matches!(
         solve(&p, &disc, Method::Galerkin),
-        Err(Error::NoPatches { .. })
+        Err(PdeError::NoPatches { .. })
     ));
 }
 
@@ -174,7 +179,7 @@ fn sampled_data_needs_samples_and_jets() {
     assert!(
         matches!(
             err,
-            Error::TooFewSamples {
+            PdeError::TooFewSamples {
                 what: "samples",
                 ..
             }
@@ -190,7 +195,7 @@ fn sampled_data_needs_samples_and_jets() {
     assert!(
         matches!(
             err,
-            Error::TooFewSamples {
+            PdeError::TooFewSamples {
                 what: "end derivatives",
                 ..
             }
@@ -203,7 +208,7 @@ fn sampled_data_needs_samples_and_jets() {
         end_jet: vec![Vector3::new(0.0, 1.0, 0.0)],
     }]);
     let err = solve(&p, &Discretization::single(5, 5), Method::Galerkin).unwrap_err();
-    assert!(matches!(err, Error::NonFinite { .. }), "{err}");
+    assert!(matches!(err, PdeError::NonFinite { .. }), "{err}");
 }
 
 #[test]
@@ -212,7 +217,7 @@ fn grid_eval_rejects_out_of_range() {
     let sol = solve(&p, &Discretization::single(3, 3), Method::Collocation).unwrap();
     assert!(matches!(
         sol.surface.eval(1.5, 0.0),
-        Err(Error::ParameterOutOfRange { .. })
+        Err(PdeError::ParameterOutOfRange { .. })
     ));
     assert!(sol.surface.patch(1, 0).is_none());
 }

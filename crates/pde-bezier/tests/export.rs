@@ -4,7 +4,7 @@
 
 use bez_core::Vector3;
 use pde_bezier::cases;
-use pde_bezier::{BSplineSurface, Error, Method, read_step, solve, write_step};
+use pde_bezier::{BSplineSurface, Method, PdeError, read_step, solve, write_step};
 
 fn solutions() -> Vec<pde_bezier::Solution> {
     let mut cs = vec![cases::enneper(2, 3, 2).unwrap(), cases::vase(2, 4).unwrap()];
@@ -70,12 +70,15 @@ fn step_rejects_bad_input() {
             Vector3::new(f64::NAN, 0.0, 0.0),
         ],
     };
-    assert!(matches!(write_step(&s, "x"), Err(Error::NonFinite { .. })));
+    assert!(matches!(
+        write_step(&s, "x"),
+        Err(PdeError::NonFinite { .. })
+    ));
     let short = BSplineSurface {
         points: vec![Vector3::zeros(); 3],
         ..s.clone()
     };
-    assert!(matches!(write_step(&short, "x"), Err(Error::Core(_))));
+    assert!(matches!(write_step(&short, "x"), Err(PdeError::Core(_))));
     let decreasing = BSplineSurface {
         knots_v: vec![0.0, 0.5, 0.2, 1.0],
         points: vec![Vector3::zeros(); 4],
@@ -83,7 +86,7 @@ fn step_rejects_bad_input() {
     };
     assert_eq!(
         write_step(&decreasing, "x"),
-        Err(Error::DecreasingKnots {
+        Err(PdeError::DecreasingKnots {
             direction: "v",
             index: 2
         })
@@ -97,18 +100,18 @@ fn step_rejects_bad_input() {
     // A real without a decimal point, a missing point entity, truncation.
     let broken = text.replacen("0.0000000000000000E0", "1E-7", 1);
     assert!(
-        matches!(read_step(&broken), Err(Error::Step { .. })),
+        matches!(read_step(&broken), Err(PdeError::Step { .. })),
         "{broken}"
     );
     let missing = text.replace("#15=CARTESIAN_POINT", "#99=CARTESIAN_POINT");
-    assert!(matches!(read_step(&missing), Err(Error::Step { .. })));
+    assert!(matches!(read_step(&missing), Err(PdeError::Step { .. })));
     assert!(matches!(
         read_step(&text[..text.len() / 2]),
-        Err(Error::Step { .. })
+        Err(PdeError::Step { .. })
     ));
-    assert!(matches!(read_step("garbage"), Err(Error::Step { .. })));
+    assert!(matches!(read_step("garbage"), Err(PdeError::Step { .. })));
     let reversed = "ISO-10303-21;\nENDSEC;\nEND-ISO-10303-21;\nDATA;\n";
-    assert!(matches!(read_step(reversed), Err(Error::Step { .. })));
+    assert!(matches!(read_step(reversed), Err(PdeError::Step { .. })));
 }
 
 #[test]
@@ -130,7 +133,7 @@ fn iges_rejects_bad_input() {
     let text = pde_bezier::write_iges(&sol.spline, "x").unwrap();
     assert!(matches!(
         pde_bezier::read_iges("short line\n"),
-        Err(Error::Iges { .. })
+        Err(PdeError::Iges { .. })
     ));
     let no_t: String = text
         .lines()
@@ -139,7 +142,7 @@ fn iges_rejects_bad_input() {
         .collect();
     assert!(matches!(
         pde_bezier::read_iges(&no_t),
-        Err(Error::Iges { .. })
+        Err(PdeError::Iges { .. })
     ));
     let truncated: String = text
         .lines()
@@ -149,7 +152,7 @@ fn iges_rejects_bad_input() {
         .collect();
     assert!(matches!(
         pde_bezier::read_iges(&truncated),
-        Err(Error::Iges { .. })
+        Err(PdeError::Iges { .. })
     ));
 }
 

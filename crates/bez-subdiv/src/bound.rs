@@ -3,6 +3,7 @@
 
 use bez_core::{BezierCurve, Vector2};
 
+use crate::error::SubdivError;
 use crate::flatten::curve_size;
 
 /// The largest second difference M = maxᵢ |Pᵢ − 2Pᵢ₊₁ + Pᵢ₊₂| (0 below degree 2).
@@ -49,15 +50,26 @@ pub fn wang_depth(curve: &BezierCurve<2>, tolerance: f64) -> usize {
 ///
 /// Why: |B''| ≤ n(n − 1) M, and the chord of a parameter interval of length h interpolates B
 /// with error ≤ h²/8 · max|B''| (linear interpolation error, in norm). Each curve point is
-/// within that of its chord's point at the same parameter, and each chord point too. Returns 0
-/// for a tolerance that is not positive and finite.
-#[must_use]
-pub fn wang_segment_count(curve: &BezierCurve<2>, tolerance: f64) -> usize {
+/// within that of its chord's point at the same parameter, and each chord point too.
+///
+/// # Errors
+/// [`SubdivError::InvalidTolerance`] unless `tolerance` is positive and finite;
+/// [`SubdivError::TooManySegments`] when N is not below 2⁵² (a count no one can use, or an
+/// overflow of the second differences).
+pub fn wang_segment_count(curve: &BezierCurve<2>, tolerance: f64) -> Result<usize, SubdivError> {
     if !(tolerance.is_finite() && tolerance > 0.0) {
-        return 0;
+        return Err(SubdivError::InvalidTolerance { value: tolerance });
     }
-    // A finite positive root or +∞; the cast saturates for absurd inputs.
-    (wang_steps(curve.points(), tolerance).ceil() as usize).max(1)
+    const LIMIT: f64 = 4_503_599_627_370_496.0; // 2⁵²: every count below it is exact in f64
+    let steps = wang_steps(curve.points(), tolerance).ceil();
+    if !(steps < LIMIT) {
+        return Err(SubdivError::TooManySegments {
+            tolerance,
+            limit: LIMIT as usize,
+        });
+    }
+    // 0 ≤ steps < 2⁵²: the cast is exact.
+    Ok((steps as usize).max(1))
 }
 
 /// √(n(n − 1) M / (8 tol)) for the control polygon `points` of degree n, unrounded: Wang's
@@ -83,10 +95,21 @@ mod tests {
             Vector2::new(1.0, 4.0),
             Vector2::new(2.0, 0.0),
         ])?;
-        assert_eq!(wang_segment_count(&c, 2.0), 1);
+        assert_eq!(wang_segment_count(&c, 2.0), Ok(1));
         assert!((chord_deviation(&c, 0.0, 1.0)? - 2.0).abs() < 1e-12);
-        assert_eq!(wang_segment_count(&c, 1.99), 2);
-        assert_eq!(wang_segment_count(&c, 0.0), 0);
+        assert_eq!(wang_segment_count(&c, 1.99), Ok(2));
+        assert!(matches!(
+            wang_segment_count(&c, 0.0),
+            Err(SubdivError::InvalidTolerance { .. })
+        ));
+        assert!(matches!(
+            wang_segment_count(&c, f64::NAN),
+            Err(SubdivError::InvalidTolerance { .. })
+        ));
+        assert!(matches!(
+            wang_segment_count(&c, 1e-300),
+            Err(SubdivError::TooManySegments { .. })
+        ));
         Ok(())
     }
 
@@ -96,7 +119,7 @@ mod tests {
         for degree in [3, 7, 12, 25] {
             for c in crate::cases::random_curves(degree, 3, 40 + degree as u64) {
                 for tol in [1e-2, 1e-3] {
-                    let count = wang_segment_count(&c, tol);
+                    let count = wang_segment_count(&c, tol).unwrap();
                     for i in 0..count {
                         let (a, b) = (i as f64 / count as f64, (i + 1) as f64 / count as f64);
                         assert!(chord_deviation(&c, a, b)? <= tol, "degree {degree}");

@@ -29,6 +29,15 @@ pub enum SubdivError {
         /// The depth cap that was reached.
         limit: usize,
     },
+    /// A segment count that does not fit in `usize` (the tolerance is tiny against the curve's
+    /// second differences, or they overflow).
+    #[error("the curve needs more than {limit} segments at tolerance {tolerance}")]
+    TooManySegments {
+        /// The tolerance asked for.
+        tolerance: f64,
+        /// The largest count that can be returned.
+        limit: usize,
+    },
     /// The 1-D optimizer failed.
     #[error("the split-parameter optimizer failed: {message}")]
     Optimizer {

@@ -139,7 +139,7 @@ mod tests {
         ])
         .unwrap();
         let tol = 0.01;
-        let count = wang_segment_count(&c, tol);
+        let count = wang_segment_count(&c, tol).unwrap();
         assert!(count > 1 && count <= LOCAL_WANG_STEPS);
         let flat = flatten_local_wang(&c, tol, 40).unwrap();
         assert_eq!(flat.len(), count + 1);

@@ -103,7 +103,7 @@ pub(crate) fn nstar_table() -> Result<Table, DynError> {
     for (name, c) in bez_subdiv::cases::nstar_curves() {
         let tol = EPS * curve_size(&c);
         let n_star = optimal_segment_count(&c, tol)?;
-        let wang = wang_segment_count(&c, tol);
+        let wang = wang_segment_count(&c, tol)?;
         let r = |k: usize| k as f64 / n_star;
         let (mut count_cells, mut error_cells, mut fair_cells) = (vec![], vec![], vec![]);
         let mut rule_json = Vec::new();

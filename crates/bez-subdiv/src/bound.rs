@@ -62,7 +62,7 @@ pub fn wang_segment_count(curve: &BezierCurve<2>, tolerance: f64) -> Result<usiz
     }
     const LIMIT: f64 = 4_503_599_627_370_496.0; // 2⁵²: every count below it is exact in f64
     let steps = wang_steps(curve.points(), tolerance).ceil();
-    if !(steps < LIMIT) {
+    if steps.is_nan() || steps >= LIMIT {
         return Err(SubdivError::TooManySegments {
             tolerance,
             limit: LIMIT as usize,

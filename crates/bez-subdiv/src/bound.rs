@@ -88,7 +88,7 @@ mod tests {
     use crate::chord::chord_deviation;
 
     #[test]
-    fn wang_count_is_tight_on_a_parabola() -> Result<(), crate::SubdivError> {
+    fn wang_count_is_tight_on_a_parabola() -> Result<(), SubdivError> {
         // y = 8t(1 − t): M = 8, n(n − 1) M / 8 = 2; one chord deviates by the apex height 2.
         let c = BezierCurve::new(vec![
             Vector2::new(0.0, 0.0),
@@ -115,7 +115,7 @@ mod tests {
 
     #[cfg(feature = "paper")]
     #[test]
-    fn uniform_steps_of_wang_count_are_within_tolerance() -> Result<(), crate::SubdivError> {
+    fn uniform_steps_of_wang_count_are_within_tolerance() -> Result<(), SubdivError> {
         for degree in [3, 7, 12, 25] {
             for c in crate::cases::random_curves(degree, 3, 40 + degree as u64) {
                 for tol in [1e-2, 1e-3] {

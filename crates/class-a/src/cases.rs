@@ -203,8 +203,8 @@ pub fn fig7_general() -> Result<(TypicalPlanar, BezierCurve<2>), ClassAError> {
     let a = fig7_points();
     let t = TypicalPlanar::from_points(&a[0], &a[1], &a[2], 9)?;
     let c = class_a_curve(
-        &t.b0,
-        &(t.mu * t.length),
+        &t.b0(),
+        &(t.mu() * t.length()),
         &perturb2(&t.matrix(), FIG7_DELTA),
         9,
     )?;

@@ -13,6 +13,17 @@ pub enum ClassAError {
         /// Which input.
         name: &'static str,
     },
+    /// A parameter of a curve is out of its range (e.g. a non-positive scale or length, a
+    /// start direction that is not a unit vector).
+    #[error("{name} = {value} is out of range: {expected}")]
+    InvalidParameter {
+        /// Which parameter.
+        name: &'static str,
+        /// The value given.
+        value: f64,
+        /// The range it must be in.
+        expected: &'static str,
+    },
     /// The degree is too low for the construction.
     #[error("degree {degree} is too low: at least {needed} is needed")]
     DegreeTooLow {

@@ -9,21 +9,56 @@ use crate::matrix::{typical_matrix2, typical_planar_margin};
 use crate::{ClassAError, Interpolation, class_a_curve};
 
 /// A typical planar Class A curve: b₀, first leg L·μ, and M = s·R(θ) (eq. (5)).
+///
+/// Fields are private: [`TypicalPlanar::from_points`] solves them from three points and
+/// [`TypicalPlanar::new`] checks given ones (deserialization goes through it too).
 #[derive(Debug, Clone, Copy, PartialEq)]
-#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
+#[cfg_attr(
+    feature = "serde",
+    derive(serde::Serialize, serde::Deserialize),
+    serde(try_from = "PlanarRepr", into = "PlanarRepr")
+)]
 pub struct TypicalPlanar {
-    /// First control point b₀ = α₀.
-    pub b0: Vector2,
-    /// Unit start tangent μ.
-    pub mu: Vector2,
-    /// Length L = |Δb₀| (the paper's second meaning of "b₀").
-    pub length: f64,
-    /// Scale s of M.
-    pub s: f64,
-    /// Rotation angle θ per leg (signed).
-    pub theta: f64,
-    /// Degree n.
-    pub degree: usize,
+    b0: Vector2,
+    mu: Vector2,
+    length: f64,
+    s: f64,
+    theta: f64,
+    degree: usize,
+}
+
+/// Serialized form of [`TypicalPlanar`], checked by [`TypicalPlanar::new`] when read.
+#[cfg(feature = "serde")]
+#[derive(serde::Serialize, serde::Deserialize)]
+struct PlanarRepr {
+    b0: Vector2,
+    mu: Vector2,
+    length: f64,
+    s: f64,
+    theta: f64,
+    degree: usize,
+}
+
+#[cfg(feature = "serde")]
+impl TryFrom<PlanarRepr> for TypicalPlanar {
+    type Error = ClassAError;
+    fn try_from(r: PlanarRepr) -> Result<Self, ClassAError> {
+        Self::new(r.b0, r.mu, r.length, r.s, r.theta, r.degree)
+    }
+}
+
+#[cfg(feature = "serde")]
+impl From<TypicalPlanar> for PlanarRepr {
+    fn from(t: TypicalPlanar) -> Self {
+        Self {
+            b0: t.b0,
+            mu: t.mu,
+            length: t.length,
+            s: t.s,
+            theta: t.theta,
+            degree: t.degree,
+        }
+    }
 }
 
 /// Signed angle from a to b in (−π, π].
@@ -212,6 +247,97 @@ pub fn planar_feasibility(
 }
 
 impl TypicalPlanar {
+    /// The curve with first control point b₀, unit start direction μ, first leg length L > 0,
+    /// M = s·R(θ) with s > 0, and degree n ≥ 2. Being Class A is reported
+    /// ([`TypicalPlanar::margin`]), not required.
+    ///
+    /// # Errors
+    /// [`ClassAError::NonFinite`], [`ClassAError::InvalidParameter`] (|μ| not 1 within 1e-12,
+    /// L ≤ 0 or s ≤ 0), [`ClassAError::DegreeTooLow`].
+    pub fn new(
+        b0: Vector2,
+        mu: Vector2,
+        length: f64,
+        s: f64,
+        theta: f64,
+        degree: usize,
+    ) -> Result<Self, ClassAError> {
+        for (name, ok) in [
+            ("b0", b0.is_finite()),
+            ("mu", mu.is_finite()),
+            ("length", length.is_finite()),
+            ("s", s.is_finite()),
+            ("theta", theta.is_finite()),
+        ] {
+            if !ok {
+                return Err(ClassAError::NonFinite { name });
+            }
+        }
+        if (mu.norm() - 1.0).abs() > 1e-12 {
+            return Err(ClassAError::InvalidParameter {
+                name: "|mu|",
+                value: mu.norm(),
+                expected: "1 within 1e-12",
+            });
+        }
+        for (name, value) in [("length", length), ("s", s)] {
+            if value <= 0.0 {
+                return Err(ClassAError::InvalidParameter {
+                    name,
+                    value,
+                    expected: "positive",
+                });
+            }
+        }
+        if degree < 2 {
+            return Err(ClassAError::DegreeTooLow { degree, needed: 2 });
+        }
+        Ok(Self {
+            b0,
+            mu,
+            length,
+            s,
+            theta,
+            degree,
+        })
+    }
+
+    /// First control point b₀ = α₀.
+    #[must_use]
+    pub fn b0(&self) -> Vector2 {
+        self.b0
+    }
+
+    /// Unit start tangent μ.
+    #[must_use]
+    pub fn mu(&self) -> Vector2 {
+        self.mu
+    }
+
+    /// Length L = |Δb₀| of the first leg (the paper's second meaning of "b₀").
+    #[must_use]
+    pub fn length(&self) -> f64 {
+        self.length
+    }
+
+    /// Scale s of M.
+    #[must_use]
+    pub fn s(&self) -> f64 {
+        self.s
+    }
+
+    /// Rotation angle θ per leg (signed).
+    #[must_use]
+    pub fn theta(&self) -> f64 {
+        self.theta
+    }
+
+    /// Degree n.
+    #[must_use]
+    pub fn degree(&self) -> usize {
+        self.degree
+    }
+
     /// Solves the typical planar Class A curve of degree n through α₀ and α₂ with end tangents
     /// along α₁ − α₀ and α₂ − α₁ (eqs. (5)–(8)): θ = ψ/(n − 1), s from [`solve_scale`],
     /// L = |α₂ − α₀| / |Σ zʲ| with z = s e^{iθ}.
@@ -447,5 +573,51 @@ pub fn planar_nelder_mead(
             method: "Nelder-Mead",
             residual,
         }),
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn new_checks_every_parameter_and_agrees_with_from_points() {
+        let (a0, a1, a2) = (
+            Vector2::new(0.0, 0.0),
+            Vector2::new(1.0, 0.0),
+            Vector2::new(1.6, 1.0),
+        );
+        let solved = TypicalPlanar::from_points(&a0, &a1, &a2, 7).unwrap();
+        let rebuilt = TypicalPlanar::new(
+            solved.b0(),
+            solved.mu(),
+            solved.length(),
+            solved.s(),
+            solved.theta(),
+            solved.degree(),
+        )
+        .unwrap();
+        assert_eq!(rebuilt, solved);
+        let (b0, mu) = (Vector2::new(0.0, 0.0), Vector2::new(1.0, 0.0));
+        assert!(matches!(
+            TypicalPlanar::new(b0, mu, f64::NAN, 1.0, 0.1, 5),
+            Err(ClassAError::NonFinite { name: "length" })
+        ));
+        assert!(matches!(
+            TypicalPlanar::new(b0, Vector2::new(2.0, 0.0), 1.0, 1.0, 0.1, 5),
+            Err(ClassAError::InvalidParameter { name: "|mu|", .. })
+        ));
+        assert!(matches!(
+            TypicalPlanar::new(b0, mu, 1.0, -1.0, 0.1, 5),
+            Err(ClassAError::InvalidParameter { name: "s", .. })
+        ));
+        assert!(matches!(
+            TypicalPlanar::new(b0, mu, 0.0, 1.0, 0.1, 5),
+            Err(ClassAError::InvalidParameter { name: "length", .. })
+        ));
+        assert!(matches!(
+            TypicalPlanar::new(b0, mu, 1.0, 1.0, 0.1, 1),
+            Err(ClassAError::DegreeTooLow { degree: 1, needed: 2 })
+        ));
     }
 }

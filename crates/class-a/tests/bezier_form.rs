@@ -8,9 +8,9 @@ use nalgebra::{Complex, Matrix3};
 /// A planar typical curve in complex notation, with w(t) = 1 + t(z − 1), z = s e^{iθ}:
 /// x'(t) = n L μ w(t)ⁿ⁻¹ and x(t) = b₀ + L μ (w(t)ⁿ − 1)/(z − 1), from the parameters alone.
 fn planar_oracle(t: &TypicalPlanar) -> (impl Fn(f64) -> Vector2, impl Fn(f64) -> Vector2) {
-    let z = Complex::from_polar(t.s, t.theta);
-    let lmu = Complex::new(t.mu.x(), t.mu.y()) * t.length;
-    let (b0, n) = (t.b0, t.degree);
+    let z = Complex::from_polar(t.s(), t.theta());
+    let lmu = Complex::new(t.mu().x(), t.mu().y()) * t.length();
+    let (b0, n) = (t.b0(), t.degree());
     let w = move |u: f64| Complex::new(1.0, 0.0) + (z - 1.0) * u;
     let position = move |u: f64| {
         let x = lmu * (w(u).powu(n as u32) - 1.0) / (z - 1.0);

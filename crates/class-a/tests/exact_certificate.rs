@@ -190,8 +190,8 @@ fn degree_49_planar_typical_and_general() {
     agrees_with_samples(cert.verdict, &ks);
     // A general curve: the typical matrix perturbed; its verdict is checked by sampling.
     let g = class_a_curve(
-        &t.b0,
-        &(t.mu * t.length),
+        &t.b0(),
+        &(t.mu() * t.length()),
         &perturb2(&t.matrix(), [2e-3, -1e-3, 0.0, 1e-3]),
         49,
     )

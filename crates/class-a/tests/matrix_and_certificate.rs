@@ -149,7 +149,7 @@ proptest! {
         let decr = ks.windows(2).all(|w| w[1] <= w[0] * (1.0 + 1e-9));
         prop_assert!(incr || decr);
         // Closed-form curvature agrees with the kernel's.
-        let tp = TypicalPlanar { b0: Vector2::zeros(), mu: Vector2::new(0.7, 0.2).normalize(), length: Vector2::new(0.7f64, 0.2).norm(), s, theta: th, degree: n };
+        let tp = TypicalPlanar::new(Vector2::zeros(), Vector2::new(0.7, 0.2).normalize(), Vector2::new(0.7f64, 0.2).norm(), s, th, n).unwrap();
         for t in [0.0, 0.3, 1.0] {
             let k = c.signed_curvature(t).unwrap();
             prop_assert!((tp.curvature(t) - k).abs() <= 1e-9 * k.abs().max(1e-12));

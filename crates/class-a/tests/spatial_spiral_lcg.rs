@@ -78,15 +78,15 @@ fn pole_makes_similar_triangles_and_eq19_is_misprinted() {
     for (a, n) in cases::random_planar_inputs(50, 3) {
         let c = TypicalPlanar::from_points(&a[0], &a[1], &a[2], n).unwrap();
         let curve = c.curve().unwrap();
-        let rho = log_spiral_pole(&c.b0, &(c.mu * c.length), c.s, c.theta).unwrap();
-        assert!(spiral_deviation(curve.points(), &rho, c.s, c.theta) < 1e-10);
+        let rho = log_spiral_pole(&c.b0(), &(c.mu() * c.length()), c.s(), c.theta()).unwrap();
+        assert!(spiral_deviation(curve.points(), &rho, c.s(), c.theta()) < 1e-10);
         // Ratios and angles of triangles ρ bᵢ bᵢ₊₁ directly.
         let p = curve.points();
         for w in p.windows(2) {
             let (u, v) = (w[0] - rho, w[1] - rho);
-            assert!((v.norm() / u.norm() - c.s).abs() < 1e-10 * c.s);
+            assert!((v.norm() / u.norm() - c.s()).abs() < 1e-10 * c.s());
             let ang = (u.x() * v.y() - u.y() * v.x()).atan2(u.dot(&v));
-            assert!((ang - c.theta).abs() < 1e-10);
+            assert!((ang - c.theta()).abs() < 1e-10);
         }
     }
     // Printed eq. (19): correct ρ_x, wrong ρ_y (with |Δb₀| = 1).
@@ -220,13 +220,13 @@ fn unreachable_chord_is_reported() {
 fn apollonius_construction_agrees_with_closed_form_pole() {
     for (a, n) in cases::random_planar_inputs(100, 9) {
         let c = TypicalPlanar::from_points(&a[0], &a[1], &a[2], n).unwrap();
-        if (c.s - 1.0).abs() < 1e-3 {
+        if (c.s() - 1.0).abs() < 1e-3 {
             continue;
         }
         let p = c.curve().unwrap().into_points();
-        let rho = log_spiral_pole(&c.b0, &(c.mu * c.length), c.s, c.theta).unwrap();
+        let rho = log_spiral_pole(&c.b0(), &(c.mu() * c.length()), c.s(), c.theta()).unwrap();
         let geo = apollonius_pole(&[p[0], p[1], p[2], p[3]]).unwrap();
-        let scale = (p[1] - p[0]).norm() / (1.0 - c.s).abs().max(1e-3);
+        let scale = (p[1] - p[0]).norm() / (1.0 - c.s()).abs().max(1e-3);
         assert!(
             (geo - rho).norm() <= 1e-8 * scale,
             "{} vs scale {scale}",

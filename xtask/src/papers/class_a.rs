@@ -236,7 +236,7 @@ fn figures_table() -> Result<Table, DynError> {
         t6.margin(),
         lcg6.slope
     )?;
-    checked.insert("fig6".into(), json!({"s": round(t6.s), "theta": round(t6.theta), "margin": round(t6.margin()), "curvature": k6, "lcg_slope": round(lcg6.slope)}));
+    checked.insert("fig6".into(), json!({"s": round(t6.s()), "theta": round(t6.theta()), "margin": round(t6.margin()), "curvature": k6, "lcg_slope": round(lcg6.slope)}));
     let (t7, c7) = cases::fig7_general()?;
     let m7 = class_a::perturb2(&t7.matrix(), cases::FIG7_DELTA);
     let r7 = ClassAReport::of_2x2(&m7)?;

@@ -617,7 +617,10 @@ mod tests {
         ));
         assert!(matches!(
             TypicalPlanar::new(b0, mu, 1.0, 1.0, 0.1, 1),
-            Err(ClassAError::DegreeTooLow { degree: 1, needed: 2 })
+            Err(ClassAError::DegreeTooLow {
+                degree: 1,
+                needed: 2
+            })
         ));
     }
 }

@@ -83,21 +83,25 @@ impl LambdaBasis {
     }
 
     /// n: the basis has n + 1 functions.
+    #[must_use]
     pub fn n(&self) -> usize {
         self.n
     }
 
     /// The polynomial degree n + 1.
+    #[must_use]
     pub fn degree(&self) -> usize {
         self.n + 1
     }
 
     /// The shape parameter λ.
+    #[must_use]
     pub fn lambda(&self) -> f64 {
         self.lambda
     }
 
     /// The corner-cutting ratios α₀..α_{n+1} ([`corner_cut_ratio`]).
+    #[must_use]
     pub fn ratios(&self) -> Vec<f64> {
         (0..=self.n + 1)
             .map(|j| corner_cut_ratio(self.n, j, self.lambda))

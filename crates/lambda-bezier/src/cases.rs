@@ -12,6 +12,7 @@ use crate::error::LambdaError;
 use crate::join::hermite_segment;
 
 /// Akima's (1970) standard test data: 11 points, flat, then a steep rise (Fig. 5).
+#[must_use]
 pub fn akima_data() -> Vec<Vector2> {
     const X: [f64; 11] = [0.0, 2.0, 3.0, 5.0, 6.0, 8.0, 9.0, 11.0, 12.0, 14.0, 15.0];
     const Y: [f64; 11] = [
@@ -29,6 +30,7 @@ pub const AKIMA_LAMBDAS: [[f64; 5]; 2] =
 
 /// The circle example (section 4.2): P₀..P₆ of the two quartic λ-curves (n = 3),
 /// P₀(−1, 0), P₁(−1, 1.2), P₂(1, 1.2), P₃(1, 0), P₄(1, −1.2), P₅(−1, −1.2), P₆(−1, 0).
+#[must_use]
 pub fn circle_points() -> [Vector2; 7] {
     [
         Vector2::new(-1.0, 0.0),
@@ -62,6 +64,7 @@ pub fn circle_halves(lambda: f64) -> Result<[LambdaBezierCurve<2>; 2], LambdaErr
 /// Exact up to rounding: |B(t)|² is a polynomial in Bernstein form (degree 2n); its critical
 /// points are the roots of its derivative in [0, 1] (bez-core's robust isolation), and the
 /// ends are checked too.
+#[must_use]
 pub fn max_radial_error(curve: &BezierCurve<2>) -> (f64, f64) {
     let x: Vec<f64> = curve.points().iter().map(|p| p.x()).collect();
     let y: Vec<f64> = curve.points().iter().map(|p| p.y()).collect();
@@ -141,6 +144,7 @@ pub const QUINTIC_LAMBDAS: [f64; 6] = [1.0, 0.0, -1.0, -2.0, -3.0, -4.0];
 
 /// Control polygons for Figs. 3 and 4 (ours: the paper prints no coordinates): an arch of
 /// 4 points (quartic λ-curves) and of 5 points (quintic).
+#[must_use]
 pub fn arch_points(n: usize) -> Vec<Vector2> {
     match n {
         3 => vec![
@@ -161,6 +165,7 @@ pub fn arch_points(n: usize) -> Vec<Vector2> {
 
 /// A closed leaf (Fig. 7, ours): P₀ = P₃ = (0, 0), P₁ = (−1.5, 2), P₂ = (1.5, 2), rotated by
 /// `angle` radians about the origin.
+#[must_use]
 pub fn leaf_points(angle: f64) -> Vec<Vector2> {
     let (s, c) = angle.sin_cos();
     [(0.0, 0.0), (-1.5, 2.0), (1.5, 2.0), (0.0, 0.0)]

@@ -148,21 +148,25 @@ impl<const D: usize> LambdaBezierCurve<D> {
     }
 
     /// The control points P₀..Pₙ.
+    #[must_use]
     pub fn points(&self) -> &[Vector<D>] {
         &self.points
     }
 
     /// n (number of control points − 1).
+    #[must_use]
     pub fn n(&self) -> usize {
         self.points.len() - 1
     }
 
     /// The shape parameter λ.
+    #[must_use]
     pub fn lambda(&self) -> f64 {
         self.lambda
     }
 
     /// The valid λ interval of this curve's degree.
+    #[must_use]
     pub fn lambda_range(&self) -> LambdaRange {
         self.range
     }
@@ -190,6 +194,7 @@ impl<const D: usize> LambdaBezierCurve<D> {
     }
 
     /// Consumes the curve and returns its Bézier form (for export to any CAD system).
+    #[must_use]
     pub fn into_bezier(self) -> BezierCurve<D> {
         self.bezier
     }
@@ -203,17 +208,20 @@ impl<const D: usize> LambdaBezierCurve<D> {
     }
 
     /// B'(0) = (n + λ)(P₁ − P₀) (Property 1 of the curve).
+    #[must_use]
     pub fn start_tangent(&self) -> Vector<D> {
         (self.n() as f64 + self.lambda) * (self.points[1] - self.points[0])
     }
 
     /// B'(1) = (n + λ)(Pₙ − Pₙ₋₁) (Property 1 of the curve).
+    #[must_use]
     pub fn end_tangent(&self) -> Vector<D> {
         let n = self.n();
         (n as f64 + self.lambda) * (self.points[n] - self.points[n - 1])
     }
 
     /// The same curve traversed backwards: control points reversed, same λ (Property 3).
+    #[must_use]
     pub fn reverse(&self) -> Self {
         let mut points = self.points.clone();
         points.reverse();

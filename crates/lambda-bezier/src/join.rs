@@ -28,6 +28,7 @@ pub enum Continuity {
 
 /// The continuity at the joint A(1) → B(0), with relative tolerance `tol` (scaled by the sizes of
 /// the points and tangents involved).
+#[must_use]
 pub fn continuity<const D: usize>(
     a: &LambdaBezierCurve<D>,
     b: &LambdaBezierCurve<D>,

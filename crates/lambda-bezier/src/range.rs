@@ -73,32 +73,38 @@ impl LambdaRange {
     }
 
     /// The n of the basis (degree n + 1).
+    #[must_use]
     pub fn n(&self) -> usize {
         self.n
     }
 
     /// Lower end: −n(n−1)/M(n), correctly rounded to f64 (exact for the small n in use).
+    #[must_use]
     pub fn min(&self) -> f64 {
         -(self.numerator as f64) / (self.denominator as f64)
     }
 
     /// Upper end: always 1 (at λ = 1, α₁ = 1 and b_{0,n+1} = (1 − t)^{n+1}; beyond it b_{0,n+1} < 0 near t = 0).
+    #[must_use]
     pub fn max(&self) -> f64 {
         1.0
     }
 
     /// The lower end as an unreduced fraction: min = −numerator/denominator.
+    #[must_use]
     pub fn min_fraction(&self) -> (u64, u64) {
         (self.numerator, self.denominator)
     }
 
     /// The index j where the lower bound is attained: at λ = min, α_j = 0, so
     /// b_{j,n+1} loses its B_{j,n+1} coefficient (and the basis becomes linearly dependent).
+    #[must_use]
     pub fn binding_index(&self) -> usize {
         self.argmax
     }
 
     /// Whether λ lies in [min, 1].
+    #[must_use]
     pub fn contains(&self, lambda: f64) -> bool {
         lambda >= self.min() && lambda <= self.max()
     }

@@ -97,26 +97,31 @@ impl<const D: usize> LambdaBezierSurface<D> {
     }
 
     /// n: the u degree is n + 1.
+    #[must_use]
     pub fn n_u(&self) -> usize {
         self.rows.len() - 1
     }
 
     /// m: the v degree is m + 1.
+    #[must_use]
     pub fn n_v(&self) -> usize {
         self.rows[0].len() - 1
     }
 
     /// λ of the u direction.
+    #[must_use]
     pub fn lambda_u(&self) -> f64 {
         self.lambda_u
     }
 
     /// λ of the v direction.
+    #[must_use]
     pub fn lambda_v(&self) -> f64 {
         self.lambda_v
     }
 
     /// The control grid, row i = u index.
+    #[must_use]
     pub fn rows(&self) -> &[Vec<Vector<D>>] {
         &self.rows
     }
@@ -135,6 +140,7 @@ impl<const D: usize> LambdaBezierSurface<D> {
     }
 
     /// The exact Bézier form, bidegree (n + 1, m + 1).
+    #[must_use]
     pub fn to_bezier(&self) -> &BezierSurface<D> {
         &self.bezier
     }
@@ -162,6 +168,7 @@ impl<const D: usize> LambdaBezierSurface<D> {
     }
 
     /// ∂^{p+q} B / ∂u^p ∂v^q as a Bézier surface.
+    #[must_use]
     pub fn partial(&self, p: usize, q: usize) -> BezierSurface<D> {
         self.bezier.partial(p, q)
     }

@@ -4,6 +4,7 @@ use bez_core::Vector;
 
 /// `B(u) = ((1−u)³, 3u³ − 6u² + 4, −3u³ + 3u² + 3u + 1, u³) / 6`, the uniform cubic B-spline
 /// basis of eq. (1) on `u ∈ [0, 1]`; the segment runs between the 2nd and 3rd control points.
+#[must_use]
 pub fn bspline_basis(u: f64) -> [f64; 4] {
     let v = 1.0 - u;
     let u2 = u * u;
@@ -17,6 +18,7 @@ pub fn bspline_basis(u: f64) -> [f64; 4] {
 }
 
 /// `B'(u)`.
+#[must_use]
 pub fn bspline_basis_d1(u: f64) -> [f64; 4] {
     let v = 1.0 - u;
     [
@@ -28,12 +30,14 @@ pub fn bspline_basis_d1(u: f64) -> [f64; 4] {
 }
 
 /// `B''(u)`.
+#[must_use]
 pub fn bspline_basis_d2(u: f64) -> [f64; 4] {
     [1.0 - u, 3.0 * u - 2.0, 1.0 - 3.0 * u, u]
 }
 
 /// Exact conversion of one uniform cubic B-spline segment `(a, b, c, d)` to Bézier form:
 /// `((a + 4b + c)/6, (2b + c)/3, (b + 2c)/3, (b + 4c + d)/6)`.
+#[must_use]
 pub fn bspline_to_bezier<const D: usize>(ctrl: &[Vector<D>; 4]) -> [Vector<D>; 4] {
     let [a, b, c, d] = *ctrl;
     [

@@ -12,6 +12,7 @@ use bez_core::Vector2;
 /// Four concave corners at `θ = kπ/2` (where `|sin 2θ|` kinks) and smooth petal tips made unequal by
 /// the 5th harmonic: 64 points and 9 curvature maxima (4 of them sharp) at density 1, like the
 /// paper's Fig. 2 and 4 data (64 points, 9 maxima, points 1, 4, 6, 9 sharp).
+#[must_use]
 pub fn closed_petals(density: usize) -> Vec<Vector2> {
     let n = 64 * density.max(1);
     let pts = (0..n)
@@ -28,6 +29,7 @@ pub fn closed_petals(density: usize) -> Vec<Vector2> {
 /// `θ_i = 2π i / (64 · density)`: the four corners of [`closed_petals`] plus `k` ripples of
 /// amplitude `a`, so many close, unevenly spaced curvature maxima. `rippled_petals(d, 0.08, 9.0, 0.0)`
 /// is the shape on which an earlier insertion rule stalled at 10x and 100x density.
+#[must_use]
 pub fn rippled_petals(density: usize, a: f64, k: f64, phase: f64) -> Vec<Vector2> {
     let n = 64 * density.max(1);
     let pts = (0..n)
@@ -43,6 +45,7 @@ pub fn rippled_petals(density: usize, a: f64, k: f64, phase: f64) -> Vec<Vector2
 /// Open "wave with two kinks": `y = 0.2 sin(5π x) + 0.8 (|x − 22/65| + |x − 44/65|)`,
 /// `x_i = i / (65 · density)`, 66 points at density 1, two corners (slope jump 1.6, turning about
 /// 77° on a flat part) and the smooth crests of the sine.
+#[must_use]
 pub fn open_wave(density: usize) -> Vec<Vector2> {
     let m = 65 * density.max(1);
     let pts = (0..=m)
@@ -57,6 +60,7 @@ pub fn open_wave(density: usize) -> Vec<Vector2> {
 }
 
 /// Translates to the origin and scales uniformly so the longer bounding-box side is 1.
+#[must_use]
 pub fn normalize(mut pts: Vec<Vector2>) -> Vec<Vector2> {
     let Some(first) = pts.first().copied() else {
         return pts;

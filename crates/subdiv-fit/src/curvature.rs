@@ -38,6 +38,7 @@ fn neighbours(n: usize, i: usize, closed: bool) -> Option<(usize, usize)> {
 /// The turning angle `φ_i ∈ [0, π]` between `v_{i−1}v_i` and `v_i v_{i+1}` at every data point
 /// (`π` at the ends of open data). The angle between the two edges *at* the point, which the
 /// paper thresholds (Sec. 4.1), is `π − φ_i`.
+#[must_use]
 pub fn turning_angle<const D: usize>(data: &[Vector<D>], closed: bool) -> Vec<f64> {
     let n = data.len();
     (0..n)
@@ -51,6 +52,7 @@ pub fn turning_angle<const D: usize>(data: &[Vector<D>], closed: bool) -> Vec<f6
 /// Discrete curvature (Sec. 4.2): `K(v_i) = 2 sin φ_i / d_i`, the inverse radius of the circle
 /// through `v_{i−1}, v_i, v_{i+1}`, with `φ_i` the turning angle and `d_i = |v_{i+1} − v_{i−1}|`.
 /// Infinite at the ends of open data ("a large curvature value", Sec. 4.2).
+#[must_use]
 pub fn discrete_curvature<const D: usize>(data: &[Vector<D>], closed: bool) -> Vec<f64> {
     let n = data.len();
     let phi = turning_angle(data, closed);
@@ -78,6 +80,7 @@ pub fn discrete_curvature<const D: usize>(data: &[Vector<D>], closed: bool) -> V
 ///   the asymmetric test picks one point of an exact plateau), and `K_i · L > curvature_floor`, with
 ///   `L` the diagonal of the data's bounding box (so straight runs, whose discrete curvature is
 ///   rounding noise, yield none).
+#[must_use]
 pub fn feature_points<const D: usize>(
     data: &[Vector<D>],
     closed: bool,

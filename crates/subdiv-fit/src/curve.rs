@@ -141,11 +141,13 @@ impl<const D: usize> SubdivCurve<D> {
     }
 
     /// The control points.
+    #[must_use]
     pub fn points(&self) -> &[Vector<D>] {
         &self.points
     }
 
     /// The sharp flags, one per control point.
+    #[must_use]
     pub fn sharp(&self) -> &[bool] {
         &self.sharp
     }
@@ -163,6 +165,7 @@ impl<const D: usize> SubdivCurve<D> {
     }
 
     /// Number of limit-curve segments: `n` if closed, `n - 1` if open.
+    #[must_use]
     pub fn segment_count(&self) -> usize {
         if self.closure.is_closed() {
             self.points.len()
@@ -175,6 +178,7 @@ impl<const D: usize> SubdivCurve<D> {
     /// E-vertex `(p_i + p_{i+1}) / 2`, regular V-vertex `(p_{i-1} + 6 p_i + p_{i+1}) / 8`,
     /// sharp V-vertex `p_i`.
     /// V-vertices keep their flag; E-vertices are regular.
+    #[must_use]
     pub fn refine(&self) -> Self {
         let n = self.points.len();
         let edges = self.segment_count();
@@ -205,6 +209,7 @@ impl<const D: usize> SubdivCurve<D> {
     }
 
     /// `levels` levels of refinement.
+    #[must_use]
     pub fn refine_levels(&self, levels: usize) -> Self {
         let mut c = self.clone();
         for _ in 0..levels {

@@ -21,11 +21,13 @@ use crate::SubdivFitError;
 use crate::bspline::bspline_basis;
 
 /// The subdivision matrix `A` next to a sharp vertex (corrected first row).
+#[must_use]
 pub fn sharp_matrix() -> Matrix3<f64> {
     Matrix3::new(1.0, 0.0, 0.0, 0.5, 0.5, 0.0, 0.125, 0.75, 0.125)
 }
 
 /// The extended subdivision matrix `Ā` (4×3): `A` with the row `[0, 1/2, 1/2]` appended.
+#[must_use]
 pub fn extended_sharp_matrix() -> Matrix4x3<f64> {
     Matrix4x3::new(
         1.0, 0.0, 0.0, 0.5, 0.5, 0.0, 0.125, 0.75, 0.125, 0.0, 0.5, 0.5,
@@ -36,16 +38,19 @@ pub fn extended_sharp_matrix() -> Matrix4x3<f64> {
 pub const EIGENVALUES: [f64; 3] = [0.125, 0.5, 1.0];
 
 /// Eigenvectors of `A` as the columns of `U` (unnormalized: `(0,0,1)`, `(0,1,2)`, `(1,1,1)`).
+#[must_use]
 pub fn eigenvectors() -> Matrix3<f64> {
     Matrix3::new(0.0, 0.0, 1.0, 0.0, 1.0, 1.0, 1.0, 2.0, 1.0)
 }
 
 /// `U⁻¹`, exact: rows `(1, −2, 1)`, `(−1, 1, 0)`, `(1, 0, 0)`.
+#[must_use]
 pub fn eigenvectors_inverse() -> Matrix3<f64> {
     Matrix3::new(1.0, -2.0, 1.0, -1.0, 1.0, 0.0, 1.0, 0.0, 0.0)
 }
 
 /// The eigen basis functions `x(t) = B(t) Ā U` (Theorem 2's `x_l`, with the corrected matrix).
+#[must_use]
 pub fn eigen_basis(t: f64) -> [f64; 3] {
     let b = RowVector4::from(bspline_basis(t));
     let x = b * extended_sharp_matrix() * eigenvectors();
@@ -53,6 +58,7 @@ pub fn eigen_basis(t: f64) -> [f64; 3] {
 }
 
 /// The level `k` and local parameter `t = 2^(k+1) u − 1` with `u ∈ (2^-(k+1), 2^-k]`.
+#[must_use]
 pub fn level_of(u: f64) -> (i32, f64) {
     let mut k = 0_i32;
     let mut scale = 2.0_f64;

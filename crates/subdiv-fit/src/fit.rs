@@ -80,6 +80,7 @@ pub struct FitOptions {
 
 impl FitOptions {
     /// The defaults with the given tolerance.
+    #[must_use]
     pub fn new(tolerance: f64) -> Self {
         Self {
             tolerance,
@@ -95,6 +96,7 @@ impl FitOptions {
     }
 
     /// The paper's configuration: one-sided error, interpolation.
+    #[must_use]
     pub fn paper(tolerance: f64) -> Self {
         Self {
             measure: ErrorMeasure::DataToCurve,
@@ -135,11 +137,13 @@ pub struct Fit<const D: usize> {
 
 impl<const D: usize> Fit<D> {
     /// Number of insertion rounds performed (the paper's "loops").
+    #[must_use]
     pub fn rounds(&self) -> usize {
         self.reports.len().saturating_sub(1)
     }
 
     /// The last round's report.
+    #[must_use]
     pub fn last(&self) -> Option<&RoundReport> {
         self.reports.last()
     }

@@ -17,10 +17,7 @@ fn rules(c: &mut Criterion) {
         let mut g = c.benchmark_group(format!("flatten_{name}"));
         for n in [3, 12, 25] {
             let curve = random_curve::<2>(n, 100 + n as u64);
-            let options = FlattenOptions {
-                rule,
-                ..FlattenOptions::default()
-            };
+            let options = FlattenOptions::default().with_rule(rule);
             g.bench_with_input(BenchmarkId::from_parameter(n), &curve, |b, cv| {
                 b.iter(|| flatten(black_box(cv), &options));
             });

@@ -75,11 +75,9 @@ fn flatten_all<C: BezierForm<2> + ?Sized>(curve: &C, tolerance: f64) {
     // tolerance × the curve's size, which for these smooth arcs (no cusp, no loop) bounds the
     // distance to the polyline too.
     let size = bez_subdiv::curve_size(curve.as_bezier());
-    let options = FlattenOptions {
-        rule: SplitRule::flatness(),
-        tolerance,
-        ..FlattenOptions::default()
-    };
+    let options = FlattenOptions::default()
+        .with_rule(SplitRule::flatness())
+        .with_tolerance(tolerance);
     let general = flatten(curve, &options).unwrap();
     let mut fixed = Vec::new();
     flatten_fixed_into(curve, tolerance, 40, &mut fixed).unwrap();

@@ -9,6 +9,7 @@ use crate::roots::roots_in_unit_interval;
 
 /// The result of a nearest-point query.
 #[derive(Debug, Clone, Copy, PartialEq)]
+#[non_exhaustive]
 pub struct Nearest<const D: usize> {
     /// Parameter of the nearest point.
     pub t: f64,

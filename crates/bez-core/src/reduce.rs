@@ -6,6 +6,7 @@ use crate::vector::Vector;
 
 /// A degree-reduced curve and the bound on how far it is from the original.
 #[derive(Debug, Clone, PartialEq)]
+#[non_exhaustive]
 pub struct Reduced<const D: usize> {
     /// The curve of degree n − 1.
     pub curve: BezierCurve<D>,

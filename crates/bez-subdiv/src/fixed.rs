@@ -16,7 +16,7 @@ use crate::measure::within_chord_line;
 /// The same algorithm as the general path, step for step: a piece stops when eq. (3) holds,
 /// max_{i=1..n−1} D(P₀Pₙ, Pᵢ) ≤ ε · max(x extent, y extent) of the original control points, and
 /// is otherwise halved by de Casteljau at t = ½, left piece first. The output equals
-/// `flatten(curve, &FlattenOptions { rule: SplitRule::Fixed, .. })`'s polyline and counts bit for
+/// `flatten(curve, &FlattenOptions::default().with_rule(SplitRule::Fixed))`'s polyline and counts bit for
 /// bit; what differs is the storage: pending pieces live in one flat buffer used as a stack (at
 /// most `max_depth` + 1 pieces), final pieces go straight into the polyline, and nothing is
 /// allocated per piece. Piece parameter ranges are not recorded.

@@ -16,6 +16,7 @@ pub const DEFAULT_MAX_DEPTH: usize = 40;
 /// Options of [`flatten`].
 #[derive(Debug, Clone, Copy, PartialEq)]
 #[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
+#[non_exhaustive]
 pub struct FlattenOptions {
     /// ε of eq. (3), relative to the original curve's size (default 1e-5).
     pub tolerance: f64,
@@ -23,6 +24,29 @@ pub struct FlattenOptions {
     pub rule: SplitRule,
     /// The depth cap (default 40).
     pub max_depth: usize,
+}
+
+impl FlattenOptions {
+    /// With `tolerance` set to `value` (the relative ε of eq. (3)).
+    #[must_use]
+    pub fn with_tolerance(mut self, value: f64) -> Self {
+        self.tolerance = value;
+        self
+    }
+
+    /// With `rule` set to `value` (the split rule).
+    #[must_use]
+    pub fn with_rule(mut self, value: SplitRule) -> Self {
+        self.rule = value;
+        self
+    }
+
+    /// With `max_depth` set to `value` (the subdivision depth cap).
+    #[must_use]
+    pub fn with_max_depth(mut self, value: usize) -> Self {
+        self.max_depth = value;
+        self
+    }
 }
 
 impl Default for FlattenOptions {
@@ -67,6 +91,7 @@ pub struct FlattenStats {
 /// the same input are equal.
 #[derive(Debug, Clone)]
 #[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
+#[non_exhaustive]
 pub struct Flattening {
     /// The control polygons of the final pieces in order, joints not repeated.
     pub polyline: Vec<Vector2>,
@@ -225,11 +250,9 @@ mod tests {
     #[test]
     fn errors_are_typed() {
         assert_typed_errors(|c, tolerance, max_depth| {
-            let options = FlattenOptions {
-                tolerance,
-                max_depth,
-                ..FlattenOptions::default()
-            };
+            let options = FlattenOptions::default()
+                .with_tolerance(tolerance)
+                .with_max_depth(max_depth);
             flatten(c, &options)
         });
     }

@@ -8,6 +8,7 @@ use crate::fixed::halve_until;
 /// A point of a flattening: a point of the curve and its parameter.
 #[derive(Debug, Clone, Copy, PartialEq)]
 #[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
+#[non_exhaustive]
 pub struct FlatPoint {
     /// Parameter on the curve.
     pub t: f64,

@@ -34,7 +34,7 @@
 //!     Vector2::new(0.0, 0.0), Vector2::new(1.0, 2.0),
 //!     Vector2::new(3.0, -1.0), Vector2::new(4.0, 1.0),
 //! ])?;
-//! let options = FlattenOptions { rule: SplitRule::flatness(), ..FlattenOptions::default() };
+//! let options = FlattenOptions::default().with_rule(SplitRule::flatness());
 //! let result = flatten(&curve, &options)?;
 //! assert_eq!(result.stats.splits + 1, result.stats.pieces);
 //! assert_eq!(result.polyline[0], curve.start());

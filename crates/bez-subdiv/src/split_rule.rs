@@ -176,6 +176,7 @@ impl SplitRule {
 
 /// A chosen split parameter and what it cost.
 #[derive(Debug, Clone, Copy, PartialEq)]
+#[non_exhaustive]
 pub struct Choice {
     /// The split parameter in (0, 1).
     pub t: f64,

@@ -27,11 +27,10 @@ fn general(
     tolerance: f64,
     max_depth: usize,
 ) -> Result<(Vec<Vector2>, bez_subdiv::FlattenStats), SubdivError> {
-    let options = FlattenOptions {
-        tolerance,
-        rule: SplitRule::Fixed,
-        max_depth,
-    };
+    let options = FlattenOptions::default()
+        .with_tolerance(tolerance)
+        .with_rule(SplitRule::Fixed)
+        .with_max_depth(max_depth);
     flatten(c, &options).map(|f| (f.polyline, f.stats))
 }
 

@@ -81,7 +81,7 @@ proptest! {
     #[test]
     fn fixed_rule_depth_never_exceeds_wang_bound(c in curve::<2>(1..=30, 1.0), e in 1..7i32) {
         let eps = 10f64.powi(-e);
-        let f = flatten(&c, &FlattenOptions { tolerance: eps, ..FlattenOptions::default() }).unwrap();
+        let f = flatten(&c, &FlattenOptions::default().with_tolerance(eps)).unwrap();
         prop_assert!(f.stats.depth <= bez_subdiv::wang_depth(&c, eps), "{} > {}", f.stats.depth, bez_subdiv::wang_depth(&c, eps));
     }
 
@@ -91,7 +91,7 @@ proptest! {
     fn pieces_reproduce_the_curve_within_tolerance(c in curve::<2>(2..=30, 1.0)) {
         let size = curve_size(&c);
         for rule in rules() {
-            let options = FlattenOptions { tolerance: 1e-3, rule, ..FlattenOptions::default() };
+            let options = FlattenOptions::default().with_tolerance(1e-3).with_rule(rule);
             let f = flatten(&c, &options).unwrap();
             prop_assert_eq!(f.pieces.first().unwrap().t0, 0.0);
             prop_assert_eq!(f.pieces.last().unwrap().t1, 1.0);

@@ -53,6 +53,7 @@ pub enum Monotonicity {
 /// A monotonicity certificate.
 #[derive(Debug, Clone, PartialEq)]
 #[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
+#[non_exhaustive]
 pub struct Certificate {
     /// The verdict.
     pub verdict: Monotonicity,

@@ -20,6 +20,7 @@ const ANGLE_EVALUATION_ALLOWANCE: f64 = 8.0 * f64::EPSILON;
 /// The achieved errors of a curve's control points b₀..bₙ against the interactive points.
 #[derive(Debug, Clone, Copy, PartialEq)]
 #[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
+#[non_exhaustive]
 pub struct Interpolation {
     /// |b₀ − α_first| / |α_last − α_first|.
     pub start_point: f64,

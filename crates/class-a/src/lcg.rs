@@ -65,6 +65,7 @@ pub fn torsion_with_derivative(curve: &BezierCurve<3>, t: f64) -> Result<(f64, f
 /// A logarithmic curvature (or torsion) graph with its least-squares line y = αx + c (eq. (20)).
 #[derive(Debug, Clone, PartialEq)]
 #[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
+#[non_exhaustive]
 pub struct LogGraph {
     /// Points (x, y) = (log ρ, log(ρ |ds/dρ|)), ρ = 1/|κ| (or μ = 1/|τ|).
     pub points: Vec<(f64, f64)>,

@@ -69,6 +69,7 @@ pub(crate) fn signed_angle(a: &Vector2, b: &Vector2) -> f64 {
 /// The geometry of three interactive points: ψ (tangent turn), δ (chord angle), |chord|.
 #[derive(Debug, Clone, Copy, PartialEq)]
 #[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
+#[non_exhaustive]
 pub struct PlanarGeometry {
     /// Unit start tangent μ = (α₁ − α₀)/|α₁ − α₀|.
     pub mu: Vector2,
@@ -179,6 +180,7 @@ pub fn solve_scale(theta: f64, delta: f64, degree: usize) -> f64 {
 /// Whether three points admit a typical Class A curve of degree n, and by which margin.
 #[derive(Debug, Clone, Copy, PartialEq)]
 #[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
+#[non_exhaustive]
 pub struct PlanarFeasibility {
     /// The scale s solved from the points.
     pub s: f64,

@@ -16,6 +16,7 @@ pub struct PatchGrid {
 /// RMS and maximum of |X − X̃| over a (τ+1) × (τ+1) grid (Xu & Wang, Sec. 4).
 #[derive(Debug, Clone, Copy, PartialEq)]
 #[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
+#[non_exhaustive]
 pub struct ErrorNorms {
     /// E = ( (1/M) Σ |X(i/τ, j/τ) − X̃(i/τ, j/τ)|² )^{1/2}, M = (τ+1)².
     pub rms: f64,

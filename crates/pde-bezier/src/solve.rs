@@ -54,6 +54,7 @@ impl Method {
 /// The result of a solve.
 #[derive(Debug, Clone, PartialEq)]
 #[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
+#[non_exhaustive]
 pub struct Solution {
     /// The approximating surface.
     pub surface: PatchGrid,
@@ -74,6 +75,7 @@ pub struct Solution {
 ///
 /// Assembly is O(P · (n m)²) for P patches; the solves are dense in the free unknowns.
 #[derive(Debug, Clone)]
+#[non_exhaustive]
 pub struct Assembly {
     su: Space,
     sv: Space,

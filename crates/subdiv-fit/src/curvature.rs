@@ -5,6 +5,7 @@ use bez_core::Vector;
 /// A data point chosen as an initial fitting point.
 #[derive(Debug, Clone, Copy, PartialEq)]
 #[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
+#[non_exhaustive]
 pub struct FeaturePoint {
     /// Index into the data.
     pub index: usize,

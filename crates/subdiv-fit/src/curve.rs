@@ -79,6 +79,7 @@ impl<const D: usize> From<SubdivCurve<D>> for CurveRepr<D> {
 
 /// Position and derivatives of the limit curve at one parameter.
 #[derive(Debug, Clone, Copy, PartialEq)]
+#[non_exhaustive]
 pub struct CurvePoint<const D: usize> {
     /// Position C.
     pub position: Vector<D>,

@@ -53,6 +53,7 @@ pub enum Insertion {
 /// Options of [`fit`].
 #[derive(Debug, Clone, Copy, PartialEq)]
 #[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
+#[non_exhaustive]
 pub struct FitOptions {
     /// Maximum allowed error δ (Sec. 5), in data units.
     pub tolerance: f64,
@@ -103,11 +104,75 @@ impl FitOptions {
             ..Self::new(tolerance)
         }
     }
+
+    /// With `tolerance` set to `value` (the fitting tolerance).
+    #[must_use]
+    pub fn with_tolerance(mut self, value: f64) -> Self {
+        self.tolerance = value;
+        self
+    }
+
+    /// With `sharp_angle` set to `value` (the corner threshold in radians).
+    #[must_use]
+    pub fn with_sharp_angle(mut self, value: f64) -> Self {
+        self.sharp_angle = value;
+        self
+    }
+
+    /// With `curvature_floor` set to `value` (the smallest curvature maximum kept).
+    #[must_use]
+    pub fn with_curvature_floor(mut self, value: f64) -> Self {
+        self.curvature_floor = value;
+        self
+    }
+
+    /// With `prominence` set to `value` (the prominence of curvature maxima).
+    #[must_use]
+    pub fn with_prominence(mut self, value: f64) -> Self {
+        self.prominence = value;
+        self
+    }
+
+    /// With `max_rounds` set to `value` (the round cap).
+    #[must_use]
+    pub fn with_max_rounds(mut self, value: usize) -> Self {
+        self.max_rounds = value;
+        self
+    }
+
+    /// With `measure` set to `value` (the error measure).
+    #[must_use]
+    pub fn with_measure(mut self, value: ErrorMeasure) -> Self {
+        self.measure = value;
+        self
+    }
+
+    /// With `mode` set to `value` (interpolation or least squares).
+    #[must_use]
+    pub fn with_mode(mut self, value: FitMode) -> Self {
+        self.mode = value;
+        self
+    }
+
+    /// With `samples_per_segment` set to `value` (the samples of the curve-to-data error).
+    #[must_use]
+    pub fn with_samples_per_segment(mut self, value: usize) -> Self {
+        self.samples_per_segment = value;
+        self
+    }
+
+    /// With `insertion` set to `value` (the insertion rule).
+    #[must_use]
+    pub fn with_insertion(mut self, value: Insertion) -> Self {
+        self.insertion = value;
+        self
+    }
 }
 
 /// Errors of one round.
 #[derive(Debug, Clone, Copy, PartialEq)]
 #[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
+#[non_exhaustive]
 pub struct RoundReport {
     /// Round number: 0 is the initial fit from the curvature maxima.
     pub round: usize,
@@ -123,6 +188,7 @@ pub struct RoundReport {
 
 /// The result of [`fit`].
 #[derive(Debug, Clone, PartialEq)]
+#[non_exhaustive]
 pub struct Fit<const D: usize> {
     /// The fitted curve: one control point per fitting point.
     pub curve: SubdivCurve<D>,

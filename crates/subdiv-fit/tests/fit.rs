@@ -72,10 +72,7 @@ fn recovers_data_sampled_from_a_subdivision_curve() {
 fn test_shapes_converge_with_corners_sharp() {
     for (data, closed) in [(closed_petals(1), true), (open_wave(1), false)] {
         for mode in [FitMode::Interpolate, FitMode::LeastSquares] {
-            let opts = FitOptions {
-                mode,
-                ..FitOptions::new(0.01)
-            };
+            let opts = FitOptions::new(0.01).with_mode(mode);
             let f = fit(
                 &data,
                 if closed {
@@ -175,18 +172,12 @@ fn one_sided_measure_misses_a_bulge_that_two_sided_catches() {
         data.push(Vector2::new(1.0, i as f64 / 20.0)); // right side, up; then back to (0, 1)
     }
     let tol = 0.02;
-    let paper = FitOptions {
-        sharp_angle: 0.0,
-        ..FitOptions::paper(tol)
-    };
+    let paper = FitOptions::paper(tol).with_sharp_angle(0.0);
     let f = fit(&data, subdiv_fit::Closure::Closed, &paper).unwrap();
     let r = f.last().unwrap();
     assert!(r.max_data_to_curve <= tol);
     assert!(r.max_curve_to_data > 2.0 * tol, "{r:?}");
-    let ours = FitOptions {
-        measure: ErrorMeasure::TwoSided,
-        ..paper
-    };
+    let ours = paper.with_measure(ErrorMeasure::TwoSided);
     assert!(matches!(
         fit(&data, subdiv_fit::Closure::Closed, &ours),
         Err(SubdivFitError::NoConvergence { .. })
@@ -225,10 +216,7 @@ fn bad_input_gives_typed_errors() {
             Err(SubdivFitError::InvalidTolerance { .. })
         ));
     }
-    let bad = FitOptions {
-        sharp_angle: 4.0,
-        ..o
-    };
+    let bad = o.with_sharp_angle(4.0);
     assert!(matches!(
         fit(&ok, subdiv_fit::Closure::Closed, &bad),
         Err(SubdivFitError::InvalidOption {
@@ -236,7 +224,7 @@ fn bad_input_gives_typed_errors() {
             ..
         })
     ));
-    let capped = FitOptions { max_rounds: 0, ..o };
+    let capped = o.with_max_rounds(0);
     assert!(matches!(
         fit(&ok, subdiv_fit::Closure::Closed, &capped),
         Err(SubdivFitError::NoConvergence { rounds: 0, .. })
@@ -248,10 +236,7 @@ fn bad_input_gives_typed_errors() {
 #[test]
 fn bisection_beats_max_error_insertion() {
     let data = open_wave(10);
-    let literal = FitOptions {
-        insertion: Insertion::MaxError,
-        ..FitOptions::new(0.01)
-    };
+    let literal = FitOptions::new(0.01).with_insertion(Insertion::MaxError);
     let m = fit(&data, subdiv_fit::Closure::Open, &literal).unwrap();
     let b = fit(&data, subdiv_fit::Closure::Open, &FitOptions::new(0.01)).unwrap();
     all_within(&data, &m, 0.01);
@@ -265,10 +250,7 @@ fn bisection_beats_max_error_insertion() {
 #[allow(clippy::unwrap_used, reason = "test helper")]
 fn converges_cleanly(data: &[Vector2], mode: FitMode, max_rounds: usize) {
     let tol = 0.01;
-    let opts = FitOptions {
-        mode,
-        ..FitOptions::new(tol)
-    };
+    let opts = FitOptions::new(tol).with_mode(mode);
     let f = fit(data, subdiv_fit::Closure::Closed, &opts).unwrap();
     let r = f.last().unwrap();
     assert!(

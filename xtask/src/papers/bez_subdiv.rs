@@ -53,10 +53,7 @@ pub(super) fn rules() -> [SplitRule; 5] {
 
 /// Flattens with the paper's ε and returns the counts and the median wall time in ms.
 fn run(curve: &BezierCurve<2>, rule: SplitRule) -> Result<(FlattenStats, f64), DynError> {
-    let options = FlattenOptions {
-        rule,
-        ..FlattenOptions::default()
-    };
+    let options = FlattenOptions::default().with_rule(rule);
     let mut times = Vec::with_capacity(REPS);
     let mut stats = FlattenStats::default();
     for _ in 0..REPS {

@@ -39,11 +39,9 @@ fn modes() -> Vec<Mode> {
         modes.push((
             format!("{}, `flatten` (control polygons)", rule.name()),
             Box::new(move |c, tol, out| {
-                let options = FlattenOptions {
-                    rule,
-                    tolerance: tol / bez_subdiv::curve_size(c),
-                    ..FlattenOptions::default()
-                };
+                let options = FlattenOptions::default()
+                    .with_rule(rule)
+                    .with_tolerance(tol / bez_subdiv::curve_size(c));
                 *out = bez_subdiv::flatten(c, &options)?.polyline;
                 Ok(())
             }),

@@ -48,11 +48,9 @@ fn configs() -> [(&'static str, FitOptions); 3] {
         ("two-sided, interpolation", FitOptions::new(TOL)),
         (
             "two-sided, least squares",
-            FitOptions {
-                mode: FitMode::LeastSquares,
-                measure: ErrorMeasure::TwoSided,
-                ..FitOptions::new(TOL)
-            },
+            FitOptions::new(TOL)
+                .with_mode(FitMode::LeastSquares)
+                .with_measure(ErrorMeasure::TwoSided),
         ),
     ]
 }
@@ -213,10 +211,7 @@ fn initial_fit(data: &[Vector2], closed: bool) -> Result<(Fit<2>, SubdivCurve<2>
         } else {
             subdiv_fit::Closure::Open
         },
-        &FitOptions {
-            tolerance: f64::MAX,
-            ..FitOptions::new(TOL)
-        },
+        &FitOptions::new(TOL).with_tolerance(f64::MAX),
     )?;
     Ok((f, first.curve))
 }

@@ -190,10 +190,7 @@ pub(crate) fn table() -> Result<Table, DynError> {
                 subdiv_fit::FitMode::LeastSquares,
             ),
         ] {
-            let opts = FitOptions {
-                mode,
-                ..FitOptions::new(0.01)
-            };
+            let opts = FitOptions::new(0.01).with_mode(mode);
             let (f, ms) = median_ms(REPS, || {
                 Ok(fit(
                     &data,

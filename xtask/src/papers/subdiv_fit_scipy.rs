@@ -112,10 +112,7 @@ pub(crate) fn run() -> Result<(), DynError> {
     for ((name, _, data, closed), sp) in shapes.iter().zip(&scipy) {
         let mut ours = Vec::new();
         for mode in [FitMode::Interpolate, FitMode::LeastSquares] {
-            let opts = FitOptions {
-                mode,
-                ..FitOptions::new(TOL)
-            };
+            let opts = FitOptions::new(TOL).with_mode(mode);
             let (f, ms) = median_ms(REPS, || {
                 Ok(fit(
                     data,

@@ -39,11 +39,9 @@ fn eq3_rules() -> [(&'static str, SplitRule); 5] {
 fn run(c: &BezierCurve<2>, rule: SplitRule, eps: f64) -> Result<Flattening, DynError> {
     Ok(flatten(
         c,
-        &FlattenOptions {
-            tolerance: eps,
-            rule,
-            ..FlattenOptions::default()
-        },
+        &FlattenOptions::default()
+            .with_tolerance(eps)
+            .with_rule(rule),
     )?)
 }
 

@@ -171,6 +171,25 @@ impl<const D: usize> BezierCurve<D> {
         Ok(self.eval_unchecked(t))
     }
 
+    /// B(t) with t clamped to [0, 1] (NaN counts as 0): the evaluation for hot loops whose
+    /// parameters are in range by construction. No `Result` to unwrap, the same value as
+    /// [`BezierCurve::eval`] for every t in [0, 1], and never a point off the curve segment.
+    ///
+    /// ```
+    /// use bez_core::{BezierCurve, Vector2};
+    /// let c = BezierCurve::new(vec![Vector2::new(0.0, 0.0), Vector2::new(2.0, 2.0)])?;
+    /// assert_eq!(c.eval_clamped(0.25), c.eval(0.25)?);
+    /// assert_eq!(c.eval_clamped(1.5), c.end());
+    /// assert_eq!(c.eval_clamped(f64::NAN), c.start());
+    /// # Ok::<(), bez_core::CoreError>(())
+    /// ```
+    #[inline(always)]
+    #[must_use]
+    pub fn eval_clamped(&self, t: f64) -> Vector<D> {
+        // `max` then `min` map NaN to 0 (f64::max returns the non-NaN operand).
+        self.eval_unchecked(t.max(0.0).min(1.0))
+    }
+
     /// B(t) for a t already checked to be in [0, 1] (also valid, as a polynomial, outside).
     ///
     /// Degrees ≤ 3 use the Bernstein weights directly (non-negative, summing to 1, and exactly

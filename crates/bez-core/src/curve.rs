@@ -185,6 +185,10 @@ impl<const D: usize> BezierCurve<D> {
     /// ```
     #[inline(always)]
     #[must_use]
+    #[expect(
+        clippy::manual_clamp,
+        reason = "f64::clamp keeps NaN; max then min maps it to 0"
+    )]
     pub fn eval_clamped(&self, t: f64) -> Vector<D> {
         // `max` then `min` map NaN to 0 (f64::max returns the non-NaN operand).
         self.eval_unchecked(t.max(0.0).min(1.0))

@@ -75,7 +75,7 @@ fn versus_kurbo(c: &mut Criterion) {
     let mut g = c.benchmark_group("cubic_vs_kurbo");
     g.bench_function("bezkit eval", |b| b.iter(|| ours.eval(black_box(0.37))));
     g.bench_function("bezkit eval_clamped", |b| {
-        b.iter(|| ours.eval_clamped(black_box(0.37)))
+        b.iter(|| ours.eval_clamped(black_box(0.37)));
     });
     g.bench_function("bezkit eval (slice kernel)", |b| {
         b.iter(|| bez_core::de_casteljau(black_box(p), black_box(0.37)));

@@ -74,7 +74,7 @@ impl LambdaBasis {
     ///
     /// # Errors
     /// [`LambdaError::DegreeTooLow`], [`LambdaError::NonFiniteLambda`].
-    pub fn new_unchecked_range(n: usize, lambda: f64) -> Result<Self, LambdaError> {
+    pub fn new_unrestricted(n: usize, lambda: f64) -> Result<Self, LambdaError> {
         LambdaRange::new(n)?;
         if !lambda.is_finite() {
             return Err(LambdaError::NonFiniteLambda { lambda });
@@ -268,8 +268,8 @@ mod tests {
         ));
         assert!(b.eval_by_recurrence(-0.1).is_err());
         assert!(LambdaBasis::new(4, -4.5).is_err());
-        assert!(LambdaBasis::new_unchecked_range(4, -4.5).is_ok());
-        assert!(LambdaBasis::new_unchecked_range(4, f64::INFINITY).is_err());
+        assert!(LambdaBasis::new_unrestricted(4, -4.5).is_ok());
+        assert!(LambdaBasis::new_unrestricted(4, f64::INFINITY).is_err());
         assert!(LambdaBasis::new(1, 0.0).is_err());
         assert!(corner_cut_ratio(1, 0, 0.0).is_nan());
     }

@@ -141,7 +141,7 @@ impl<const D: usize> LambdaBezierSurface<D> {
 
     /// The exact Bézier form, bidegree (n + 1, m + 1).
     #[must_use]
-    pub fn to_bezier(&self) -> &BezierSurface<D> {
+    pub fn as_bezier(&self) -> &BezierSurface<D> {
         &self.bezier
     }
 
@@ -236,8 +236,8 @@ mod tests {
             }
             assert!((s.eval_partial(u, v, 1, 0).unwrap() - du).norm() < 1e-11);
         }
-        assert_eq!(s.to_bezier().degree_u(), n + 1);
-        assert_eq!(s.to_bezier().degree_v(), m + 1);
+        assert_eq!(s.as_bezier().degree_u(), n + 1);
+        assert_eq!(s.as_bezier().degree_v(), m + 1);
         assert_eq!(s.partial(1, 1).degree_u(), n);
     }
 

@@ -50,7 +50,7 @@ proptest! {
     fn negative_just_outside(n in 2usize..=15, d in 1e-6..0.5f64, below in any::<bool>()) {
         let r = LambdaRange::new(n).unwrap();
         let l = if below { r.min() - d } else { r.max() + d };
-        let b = LambdaBasis::new_unchecked_range(n, l).unwrap();
+        let b = LambdaBasis::new_unrestricted(n, l).unwrap();
         let mut min = f64::INFINITY;
         for k in 0..=n {
             let c = b.bernstein_coefficients(k).unwrap();

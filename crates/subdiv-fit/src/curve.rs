@@ -42,8 +42,9 @@ impl Closure {
         self == Self::Closed
     }
 
-    /// [`Closure::Closed`] when `closed`.
-    pub(crate) fn from_closed(closed: bool) -> Self {
+    /// [`Closure::Closed`] when `closed`, else [`Closure::Open`]: for a flag read from data.
+    #[must_use]
+    pub fn from_closed(closed: bool) -> Self {
         if closed { Self::Closed } else { Self::Open }
     }
 }

@@ -7,15 +7,6 @@ use subdiv_fit::eigen::{
 };
 use subdiv_fit::{SubdivCurve, SubdivFitError, Vector, Vector2, Vector3};
 
-/// The closure of a polygon from a flag of the test data.
-fn closure(closed: bool) -> subdiv_fit::Closure {
-    if closed {
-        subdiv_fit::Closure::Closed
-    } else {
-        subdiv_fit::Closure::Open
-    }
-}
-
 fn polygon<const D: usize>(
     min: usize,
     max: usize,
@@ -58,7 +49,7 @@ proptest! {
 
     #[test]
     fn exact_matches_refinement_masks_2d((p, f, closed) in polygon::<2>(3, 8)) {
-        let c = SubdivCurve::new(p, f, closure(closed)).unwrap();
+        let c = SubdivCurve::new(p, f, subdiv_fit::Closure::from_closed(closed)).unwrap();
         for levels in [1, 3, 6] {
             check_against_refinement(&c, levels, 1e-12);
         }
@@ -66,7 +57,7 @@ proptest! {
 
     #[test]
     fn exact_matches_refinement_masks_3d((p, f, closed) in polygon::<3>(3, 8)) {
-        let c = SubdivCurve::new(p, f, closure(closed)).unwrap();
+        let c = SubdivCurve::new(p, f, subdiv_fit::Closure::from_closed(closed)).unwrap();
         check_against_refinement(&c, 4, 1e-12);
     }
 
@@ -81,7 +72,7 @@ proptest! {
 
     #[test]
     fn segment_bezier_is_exact((p, f, closed) in polygon::<3>(3, 7), u in 0.0..=1.0f64) {
-        let c = SubdivCurve::new(p, f, closure(closed)).unwrap();
+        let c = SubdivCurve::new(p, f, subdiv_fit::Closure::from_closed(closed)).unwrap();
         for i in 0..c.segment_count() {
             let b = c.segment_bezier(i).unwrap();
             let x = c.eval_segment(i, u).unwrap();
@@ -95,7 +86,7 @@ proptest! {
 
     #[test]
     fn continuity_at_joints((p, f, closed) in polygon::<2>(4, 9)) {
-        let c = SubdivCurve::new(p, f, closure(closed)).unwrap();
+        let c = SubdivCurve::new(p, f, subdiv_fit::Closure::from_closed(closed)).unwrap();
         let n = c.points().len();
         for i in 0..c.segment_count() {
             let next = i + 1;

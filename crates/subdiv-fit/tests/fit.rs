@@ -73,16 +73,7 @@ fn test_shapes_converge_with_corners_sharp() {
     for (data, closed) in [(closed_petals(1), true), (open_wave(1), false)] {
         for mode in [FitMode::Interpolate, FitMode::LeastSquares] {
             let opts = FitOptions::new(0.01).with_mode(mode);
-            let f = fit(
-                &data,
-                if closed {
-                    subdiv_fit::Closure::Closed
-                } else {
-                    subdiv_fit::Closure::Open
-                },
-                &opts,
-            )
-            .unwrap();
+            let f = fit(&data, subdiv_fit::Closure::from_closed(closed), &opts).unwrap();
             all_within(&data, &f, 0.01);
             let r = f.last().unwrap();
             assert!(r.max_data_to_curve <= 0.01 && r.max_curve_to_data <= 0.01);

@@ -74,15 +74,7 @@ fn fit_table() -> Result<Table, DynError> {
     let mut rows = Vec::new();
     for (name, data, closed, paper_rounds) in shapes(1) {
         for (cfg, opts) in configs() {
-            let f = fit(
-                &data,
-                if closed {
-                    subdiv_fit::Closure::Closed
-                } else {
-                    subdiv_fit::Closure::Open
-                },
-                &opts,
-            )?;
+            let f = fit(&data, subdiv_fit::Closure::from_closed(closed), &opts)?;
             let r = f.last().ok_or("empty report")?;
             let sharp0 = f.initial.len();
             let sharp_count = f.curve.sharp().iter().filter(|s| **s).count();
@@ -133,15 +125,7 @@ fn scaling_table() -> Result<Table, DynError> {
         for (name, data, closed, _) in shapes(density).into_iter().chain([rippled]) {
             let opts = FitOptions::new(TOL);
             let (f, ms) = median_ms(5, || {
-                Ok(fit(
-                    &data,
-                    if closed {
-                        subdiv_fit::Closure::Closed
-                    } else {
-                        subdiv_fit::Closure::Open
-                    },
-                    &opts,
-                )?)
+                Ok(fit(&data, subdiv_fit::Closure::from_closed(closed), &opts)?)
             })?;
             let r = f.last().ok_or("empty report")?;
             writeln!(
@@ -196,21 +180,13 @@ fn polygon(curve: &SubdivCurve<2>) -> Vec<(f64, f64)> {
 fn initial_fit(data: &[Vector2], closed: bool) -> Result<(Fit<2>, SubdivCurve<2>), DynError> {
     let f = fit(
         data,
-        if closed {
-            subdiv_fit::Closure::Closed
-        } else {
-            subdiv_fit::Closure::Open
-        },
+        subdiv_fit::Closure::from_closed(closed),
         &FitOptions::new(TOL),
     )?;
     // Round 0 alone: the same initial points with a cap of 0 rounds and a huge tolerance.
     let first = fit(
         data,
-        if closed {
-            subdiv_fit::Closure::Closed
-        } else {
-            subdiv_fit::Closure::Open
-        },
+        subdiv_fit::Closure::from_closed(closed),
         &FitOptions::new(TOL).with_tolerance(f64::MAX),
     )?;
     Ok((f, first.curve))

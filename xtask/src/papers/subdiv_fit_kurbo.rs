@@ -192,15 +192,7 @@ pub(crate) fn table() -> Result<Table, DynError> {
         ] {
             let opts = FitOptions::new(0.01).with_mode(mode);
             let (f, ms) = median_ms(REPS, || {
-                Ok(fit(
-                    &data,
-                    if closed {
-                        subdiv_fit::Closure::Closed
-                    } else {
-                        subdiv_fit::Closure::Open
-                    },
-                    &opts,
-                )?)
+                Ok(fit(&data, subdiv_fit::Closure::from_closed(closed), &opts)?)
             })?;
             let segs = f.curve.segment_count();
             let err = curve_two_sided(&f.curve, &data, closed)?;

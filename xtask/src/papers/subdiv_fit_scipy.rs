@@ -114,15 +114,7 @@ pub(crate) fn run() -> Result<(), DynError> {
         for mode in [FitMode::Interpolate, FitMode::LeastSquares] {
             let opts = FitOptions::new(TOL).with_mode(mode);
             let (f, ms) = median_ms(REPS, || {
-                Ok(fit(
-                    data,
-                    if *closed {
-                        subdiv_fit::Closure::Closed
-                    } else {
-                        subdiv_fit::Closure::Open
-                    },
-                    &opts,
-                )?)
+                Ok(fit(data, subdiv_fit::Closure::from_closed(*closed), &opts)?)
             })?;
             let err = curve_two_sided(&f.curve, data, *closed)?;
             ours.push((f.curve.points().len(), err, ms));

@@ -1,6 +1,7 @@
 //! Axis-aligned bounding boxes of control polygons and of curves.
 
 use crate::vector::Vector;
+use alloc::vec;
 
 use crate::curve::BezierCurve;
 use crate::roots::roots_in_unit_interval;

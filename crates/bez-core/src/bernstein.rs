@@ -1,6 +1,9 @@
 //! The Bernstein basis B_{i,n}(t) = C(n, i) tⁱ (1 − t)ⁿ⁻ⁱ and scalar polynomials in Bernstein form.
 
 use crate::casteljau::{de_casteljau_in_place, elevate_slice};
+use crate::math;
+use alloc::vec;
+use alloc::vec::Vec;
 
 /// Largest degree for which [`binomial`] and [`bernstein_row`] use exact integer binomials.
 ///
@@ -71,7 +74,7 @@ pub fn bernstein(n: usize, i: usize, t: f64) -> f64 {
     let direct = c * a * b;
     let in_range = |x: f64, base: f64| x.abs() >= f64::MIN_POSITIVE || base == 0.0;
     if (0.0..=1.0).contains(&t) && !(direct.is_finite() && in_range(a, t) && in_range(b, 1.0 - t)) {
-        return ln_bernstein(n, i, t).exp();
+        return math::exp(ln_bernstein(n, i, t));
     }
     direct
 }
@@ -79,16 +82,18 @@ pub fn bernstein(n: usize, i: usize, t: f64) -> f64 {
 /// ln C(n, k) as a sum of k = min(k, n − k) logarithms of exact ratios: O(min(k, n − k)).
 fn ln_binomial(n: usize, k: usize) -> f64 {
     let k = k.min(n - k);
-    (1..=k).map(|j| ((n - k + j) as f64 / j as f64).ln()).sum()
+    (1..=k)
+        .map(|j| math::ln((n - k + j) as f64 / j as f64))
+        .sum()
 }
 
 /// ln B_{i,n}(t) for t in [0, 1] (−∞ where the value is exactly 0).
 fn ln_bernstein(n: usize, i: usize, t: f64) -> f64 {
-    let ln_t = if i == 0 { 0.0 } else { i as f64 * t.ln() };
+    let ln_t = if i == 0 { 0.0 } else { i as f64 * math::ln(t) };
     let ln_s = if i == n {
         0.0
     } else {
-        (n - i) as f64 * (-t).ln_1p()
+        (n - i) as f64 * math::ln_1p(-t)
     };
     ln_binomial(n, i) + ln_t + ln_s
 }
@@ -173,7 +178,7 @@ fn bernstein_row_from_mode(t: f64, out: &mut [f64]) {
         return;
     }
     let mode = ((n as f64 * t) as usize).min(n);
-    out[mode] = ln_bernstein(n, mode, t).exp();
+    out[mode] = math::exp(ln_bernstein(n, mode, t));
     let r = t / (1.0 - t);
     for i in mode + 1..=n {
         out[i] = out[i - 1] * ((n - i + 1) as f64 / i as f64 * r);

@@ -2,6 +2,7 @@
 //! keeps its Bézier form.
 
 use crate::vector::Vector;
+use alloc::vec::Vec;
 
 use crate::bbox::Aabb;
 use crate::curve::BezierCurve;
@@ -324,6 +325,7 @@ mod tests {
     }
 
     #[test]
+    #[cfg(feature = "proptest-support")]
     fn oracle_check_accepts_the_truth_and_rejects_a_shifted_oracle() {
         use crate::proptest_support::check_bezier_form;
         // (t, t²) in Bernstein form.

@@ -4,6 +4,9 @@
 //! them. They work for any [`ControlPoint`]: `f64` (scalar polynomials in Bernstein form) and
 //! [`Vector<D>`](crate::Vector) (points in D dimensions).
 
+use crate::math;
+use alloc::vec;
+use alloc::vec::Vec;
 use core::ops::{Add, Mul, Sub};
 
 use crate::CoreError;
@@ -238,7 +241,7 @@ fn two_sum(a: f64, b: f64) -> (f64, f64) {
 #[inline]
 fn two_prod(a: f64, b: f64) -> (f64, f64) {
     let p = a * b;
-    (p, a.mul_add(b, -p))
+    (p, math::fma(a, b, -p))
 }
 
 /// Compensated de Casteljau evaluation of a scalar polynomial in Bernstein form.

@@ -1,6 +1,8 @@
 //! `BezierCurve`: a polynomial curve in D dimensions in Bernstein form.
 
 use crate::vector::Vector;
+use alloc::vec;
+use alloc::vec::Vec;
 use smallvec::SmallVec;
 
 use crate::casteljau::{

@@ -1,6 +1,8 @@
 //! Curvature and torsion of Bézier curves.
 
+use crate::math;
 use crate::vector::Vector;
+use alloc::vec::Vec;
 
 use crate::curve::BezierCurve;
 use crate::error::{CoreError, check_unit};
@@ -41,8 +43,9 @@ impl<const D: usize> BezierCurve<D> {
         let d = self.tangent_checked(t, 2)?;
         let (a, b) = (d[1], d[2]);
         let an = a.norm();
-        let wedge2 = (a.norm_squared() * b.norm_squared() - a.dot(&b).powi(2)).max(0.0);
-        Ok(wedge2.sqrt() / (an * an * an))
+        let ab = a.dot(&b);
+        let wedge2 = (a.norm_squared() * b.norm_squared() - ab * ab).max(0.0);
+        Ok(math::sqrt(wedge2) / (an * an * an))
     }
 }
 
@@ -70,7 +73,7 @@ impl BezierCurve<3> {
         let c = d[1].cross(&d[2]);
         let c2 = c.norm_squared();
         let scale = d[1].norm() * d[2].norm();
-        if c2.sqrt() <= DEGENERATE * scale || c2 == 0.0 {
+        if math::sqrt(c2) <= DEGENERATE * scale || c2 == 0.0 {
             return Err(CoreError::ZeroCurvature { t });
         }
         Ok(c.dot(&d[3]) / c2)

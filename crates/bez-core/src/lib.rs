@@ -81,6 +81,10 @@
 //!   method of a [`BezierForm`] implementor against an independent oracle), for dependent
 //!   crates' tests.
 
+#![cfg_attr(not(any(feature = "std", test)), no_std)]
+
+extern crate alloc;
+
 mod arclen;
 mod bbox;
 mod bernstein;
@@ -98,6 +102,7 @@ mod interop_kurbo;
 mod interop_mint;
 #[cfg(feature = "nalgebra")]
 mod interop_nalgebra;
+mod math;
 mod nearest;
 mod reduce;
 mod roots;

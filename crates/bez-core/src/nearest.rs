@@ -1,6 +1,8 @@
 //! Nearest point on a curve.
 
 use crate::vector::Vector;
+use alloc::vec;
+use alloc::vec::Vec;
 
 use crate::bernstein::bernstein_product;
 use crate::curve::BezierCurve;

@@ -2,7 +2,10 @@
 
 use crate::curve::BezierCurve;
 use crate::error::CoreError;
+use crate::math;
 use crate::vector::Vector;
+use alloc::vec;
+use alloc::vec::Vec;
 
 /// A degree-reduced curve and the bound on how far it is from the original.
 #[derive(Debug, Clone, PartialEq)]
@@ -92,7 +95,7 @@ fn least_squares_elevation<const D: usize>(p: &[Vector<D>]) -> Vec<Vector<D>> {
     for j in 0..n {
         let b = (j + 1) as f64 / nf;
         let c = 1.0 - b;
-        let r = a.hypot(b);
+        let r = math::hypot(a, b);
         let (cos, sin) = (a / r, b / r);
         diag[j] = r;
         sup[j] = sin * c;

@@ -2,6 +2,8 @@
 
 use crate::bernstein::eval_bernstein_poly;
 use crate::halve::de_casteljau_halve;
+use alloc::vec;
+use alloc::vec::Vec;
 
 /// Roots closer than this (in t) are reported once.
 const ROOT_RESOLUTION: f64 = 1e-13;

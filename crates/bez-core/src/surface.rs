@@ -1,6 +1,8 @@
 //! `BezierSurface`: tensor-product Bézier patches.
 
 use crate::vector::{Vector, Vector3};
+use alloc::vec;
+use alloc::vec::Vec;
 
 use crate::casteljau::{de_casteljau, de_casteljau_split, elevate_slice, hodograph_slice};
 use crate::curve::{BezierCurve, validate_points};

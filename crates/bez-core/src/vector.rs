@@ -7,6 +7,7 @@
 //! act componentwise. In two and three dimensions these are the same operations, in the same
 //! order, as nalgebra's fixed-size vectors, so values computed with either agree exactly.
 
+use crate::math;
 use core::fmt;
 use core::iter::Sum;
 use core::ops::{
@@ -160,7 +161,7 @@ impl<const D: usize> Vector<D> {
     #[inline]
     #[must_use]
     pub fn norm(&self) -> f64 {
-        self.norm_squared().sqrt()
+        math::sqrt(self.norm_squared())
     }
 
     /// The Euclidean distance |self − other|.

@@ -45,7 +45,7 @@ fn main() -> Result<(), CoreError> {
     );
 
     // Derivatives, curvature, arc length.
-    let hodograph = curve.derivative();
+    let hodograph = curve.derivative()?;
     println!("B'(0) = {:?}", hodograph.eval(0.0)?);
     println!(
         "signed curvature at t = 0.25: {:.6}",

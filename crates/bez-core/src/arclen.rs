@@ -1,7 +1,10 @@
 //! Arc length by adaptive Gauss–Legendre quadrature.
 
+use crate::casteljau::hodograph_slice;
 use crate::curve::BezierCurve;
 use crate::error::{CoreError, check_tolerance};
+use crate::math;
+use crate::vector::Vector;
 
 /// Default accuracy for [`BezierCurve::arc_length`] and [`BezierCurve::nearest`].
 pub const DEFAULT_ACCURACY: f64 = 1e-9;
@@ -31,11 +34,25 @@ impl<const D: usize> BezierCurve<D> {
     /// [`CoreError::InvalidTolerance`] unless `accuracy` is positive and finite.
     pub fn arc_length(&self, accuracy: f64) -> Result<f64, CoreError> {
         check_tolerance(accuracy)?;
-        let hodo = self.derivative();
+        // The hodograph scaled by a power of two into [1, 2) (exact): its speed cannot overflow,
+        // and the accuracy is scaled alike, so the result is that of the unscaled rule.
+        let mut hodo = hodograph_slice(self.points());
+        let scale = math::pow2_scale(hodo.iter().map(Vector::amax).fold(0.0, f64::max));
+        for p in &mut hodo {
+            *p /= scale;
+        }
+        let hodo = BezierCurve::from_valid(hodo);
         let speed = |t: f64| hodo.eval_unchecked(t).norm();
         let whole = gauss(&speed, 0.0, 1.0);
         let mut budget = MAX_SPLITS;
-        Ok(adapt(&speed, 0.0, 1.0, whole, accuracy, 0, &mut budget))
+        let length = adapt(&speed, 0.0, 1.0, whole, accuracy / scale, 0, &mut budget) * scale;
+        if length.is_finite() {
+            Ok(length)
+        } else {
+            Err(CoreError::Overflow {
+                operation: "arc_length",
+            })
+        }
     }
 }
 

@@ -3,6 +3,7 @@
 use crate::vector::Vector;
 use alloc::vec;
 
+use crate::casteljau::hodograph_slice;
 use crate::curve::BezierCurve;
 use crate::roots::roots_in_unit_interval;
 
@@ -74,10 +75,10 @@ impl<const D: usize> BezierCurve<D> {
             max: self.start(),
         };
         b.include(&self.end());
-        let hodo = self.derivative();
-        let mut coeffs = vec![0.0; hodo.points().len()];
+        let hodo = hodograph_slice(self.points());
+        let mut coeffs = vec![0.0; hodo.len()];
         for d in 0..D {
-            for (c, p) in coeffs.iter_mut().zip(hodo.points()) {
+            for (c, p) in coeffs.iter_mut().zip(&hodo) {
                 *c = p[d];
             }
             for t in roots_in_unit_interval(&coeffs) {

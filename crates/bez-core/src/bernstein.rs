@@ -254,6 +254,9 @@ pub fn bernstein_product(a: &[f64], b: &[f64]) -> Vec<f64> {
         return Vec::new();
     }
     let (m, n) = (a.len() - 1, b.len() - 1);
+    if m + n > PRODUCT_EXACT_DEGREE {
+        return bernstein_product_log(a, b);
+    }
     // Binomial rows once (O(m + n) calls), not per term: the double loop is O(mn).
     let wa: Vec<f64> = a
         .iter()
@@ -277,6 +280,40 @@ pub fn bernstein_product(a: &[f64], b: &[f64]) -> Vec<f64> {
     c
 }
 
+/// Above this product degree [`bernstein_product`] forms its weights in logarithms (the
+/// binomials C(m + n, k) leave the `f64` range near degree 1030).
+const PRODUCT_EXACT_DEGREE: usize = 500;
+
+/// [`bernstein_product`] with each weight C(m, i) C(n, j) / C(m+n, i+j) ≤ 1 (a hypergeometric
+/// probability) formed as the exponential of a sum of logarithms: finite at every degree.
+fn bernstein_product_log(a: &[f64], b: &[f64]) -> Vec<f64> {
+    let (m, n) = (a.len() - 1, b.len() - 1);
+    let (la, lb, lc) = (
+        ln_binomial_row(m),
+        ln_binomial_row(n),
+        ln_binomial_row(m + n),
+    );
+    let mut c = vec![0.0; m + n + 1];
+    for (i, &ai) in a.iter().enumerate() {
+        for (j, &bj) in b.iter().enumerate() {
+            c[i + j] += math::exp(la[i] + lb[j] - lc[i + j]) * ai * bj;
+        }
+    }
+    c
+}
+
+/// ln C(n, i) for i = 0..=n, by ln C(n, i) = ln C(n, i − 1) + ln((n − i + 1)/i).
+fn ln_binomial_row(n: usize) -> Vec<f64> {
+    let mut row = Vec::with_capacity(n + 1);
+    let mut acc = 0.0;
+    row.push(acc);
+    for i in 1..=n {
+        acc += math::ln((n - i + 1) as f64 / i as f64);
+        row.push(acc);
+    }
+    row
+}
+
 /// Bernstein coefficients of the same polynomial written in degree n + r (degree elevation).
 #[must_use]
 pub fn bernstein_elevate(coeffs: &[f64], r: usize) -> Vec<f64> {
@@ -298,6 +335,30 @@ pub fn bernstein_derivative_coeffs(coeffs: &[f64]) -> Vec<f64> {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn product_in_logarithms_matches_the_exact_weights_and_stays_finite() {
+        // Degree 60 · 70: both ways agree; degree 3000 · 3000: finite and the product of the
+        // values at t = 0.3.
+        let a: Vec<f64> = (0..=60).map(|i| ((i * 7) % 11) as f64 - 5.0).collect();
+        let b: Vec<f64> = (0..=70).map(|i| ((i * 5) % 13) as f64 - 6.0).collect();
+        let exact = bernstein_product(&a, &b);
+        let logs = bernstein_product_log(&a, &b);
+        for (x, y) in exact.iter().zip(&logs) {
+            assert!((x - y).abs() <= 1e-12 * (1.0 + x.abs()), "{x} vs {y}");
+        }
+        let a: Vec<f64> = (0..=3000).map(|i| (i as f64 * 0.01).sin()).collect();
+        let b: Vec<f64> = (0..=3000).map(|i| (i as f64 * 0.003).cos()).collect();
+        let c = bernstein_product(&a, &b);
+        assert!(c.iter().all(|x| x.is_finite()));
+        let t = 0.3;
+        let (pa, pb, pc) = (
+            eval_bernstein_poly(&a, t),
+            eval_bernstein_poly(&b, t),
+            eval_bernstein_poly(&c, t),
+        );
+        assert!((pa * pb - pc).abs() < 1e-9);
+    }
 
     #[test]
     fn binomial_matches_pascal_exactly() {

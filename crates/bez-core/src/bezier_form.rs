@@ -54,7 +54,7 @@ use crate::nearest::Nearest;
 /// };
 /// assert_eq!(arch.eval(0.5)?, Vector2::new(1.0, 1.0));
 /// assert_eq!(arch.bounding_box().max.y(), 1.0);
-/// assert_eq!(arch.derivative().degree(), 1);
+/// assert_eq!(arch.derivative()?.degree(), 1);
 /// let (left, _) = arch.split(0.5)?;
 /// assert_eq!(left.end(), arch.eval(0.5)?);
 /// // Generic consumers take any implementor, sized or not.
@@ -108,14 +108,19 @@ pub trait BezierForm<const D: usize> {
 
     /// C(t) at `count` uniformly spaced parameters 0, 1/(count−1), …, 1, as
     /// [`BezierCurve::sample_uniform`].
-    #[must_use]
-    fn sample_uniform(&self, count: usize) -> Vec<Vector<D>> {
+    ///
+    /// # Errors
+    /// [`CoreError::TooLarge`] when `count` exceeds [`MAX_SAMPLES`](crate::MAX_SAMPLES).
+    fn sample_uniform(&self, count: usize) -> Result<Vec<Vector<D>>, CoreError> {
         self.as_bezier().sample_uniform(count)
     }
 
     /// The derivative C'(t) as a Bézier curve of degree n − 1 (the hodograph of the Bézier form).
-    #[must_use]
-    fn derivative(&self) -> BezierCurve<D> {
+    ///
+    /// # Errors
+    /// [`CoreError::Overflow`] when the hodograph leaves the coordinate range
+    /// ([`MAX_COORDINATE`](crate::MAX_COORDINATE)).
+    fn derivative(&self) -> Result<BezierCurve<D>, CoreError> {
         self.as_bezier().derivative()
     }
 
@@ -242,11 +247,17 @@ mod tests {
         v.extend(s.points().iter().flat_map(|p| p.iter().copied()));
         v.extend(
             c.derivative()
+                .unwrap()
                 .points()
                 .iter()
                 .flat_map(|p| p.iter().copied()),
         );
-        v.extend(c.sample_uniform(5).iter().flat_map(|p| p.iter().copied()));
+        v.extend(
+            c.sample_uniform(5)
+                .unwrap()
+                .iter()
+                .flat_map(|p| p.iter().copied()),
+        );
         v.extend([n.t, n.distance, b.min.x(), b.min.y(), b.max.x(), b.max.y()]);
         v.push(c.arc_length(1e-10).unwrap());
         v.push(c.curvature(t).unwrap());
@@ -277,11 +288,17 @@ mod tests {
         expected.extend(s.points().iter().flat_map(|p| p.iter().copied()));
         expected.extend(
             c.derivative()
+                .unwrap()
                 .points()
                 .iter()
                 .flat_map(|p| p.iter().copied()),
         );
-        expected.extend(c.sample_uniform(5).iter().flat_map(|p| p.iter().copied()));
+        expected.extend(
+            c.sample_uniform(5)
+                .unwrap()
+                .iter()
+                .flat_map(|p| p.iter().copied()),
+        );
         expected.extend([n.t, n.distance, b.min.x(), b.min.y(), b.max.x(), b.max.y()]);
         expected.push(c.arc_length(1e-10).unwrap());
         expected.push(c.curvature(t).unwrap());

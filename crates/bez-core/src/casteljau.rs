@@ -183,33 +183,53 @@ pub fn hodograph_slice<T: ControlPoint>(points: &[T]) -> Vec<T> {
 /// Precomputed form for fast O(n) evaluation at many parameters (Horner in t/(1−t)).
 ///
 /// B(t) = (1 − t)ⁿ Σ C(n,i) Pᵢ sⁱ with s = t/(1 − t) for t ≤ ½, and
-/// B(t) = tⁿ Σ C(n,i) Pᵢ rⁿ⁻ⁱ with r = (1 − t)/t for t > ½, so |s|, |r| ≤ 1 and no power
-/// underflows before degree ≈ 1000. This is the Volk–Schumaker / Horner–Bernstein scheme.
-/// Cost: O(n) to build, O(n) per point.
+/// B(t) = tⁿ Σ C(n,i) Pᵢ rⁿ⁻ⁱ with r = (1 − t)/t for t > ½, so |s|, |r| ≤ 1. This is the
+/// Volk–Schumaker / Horner–Bernstein scheme. Above degree [`HORNER_MAX_DEGREE`] the scaled
+/// coefficients C(n,i) Pᵢ could overflow (C(n, n/2) ≈ 2ⁿ), so each point is instead
+/// Σ Pᵢ B_{i,n}(t) with the row of [`bernstein_row`](crate::bernstein_row), finite at every
+/// degree. Cost: O(n) to build, O(n) per point.
 #[derive(Debug, Clone)]
 pub struct HornerBernstein<T> {
-    scaled: Vec<T>,
+    /// C(n,i) Pᵢ up to degree [`HORNER_MAX_DEGREE`], the plain Pᵢ above it.
+    coefficients: Vec<T>,
 }
 
+/// The largest degree [`HornerBernstein`] evaluates by Horner's rule: 2⁵⁰⁰ · 10¹⁵² (the
+/// coordinate limit) is about 3 · 10³⁰², still finite.
+pub const HORNER_MAX_DEGREE: usize = 500;
+
 impl<T: ControlPoint> HornerBernstein<T> {
-    /// Builds the scaled coefficients C(n, i) Pᵢ.
+    /// Builds the scaled coefficients C(n, i) Pᵢ (or keeps Pᵢ above [`HORNER_MAX_DEGREE`]).
     #[must_use]
     pub fn new(points: &[T]) -> Self {
         let n = points.len().saturating_sub(1);
-        let scaled = points
-            .iter()
-            .enumerate()
-            .map(|(i, &p)| p * binomial(n, i))
-            .collect();
-        Self { scaled }
+        let coefficients = if n > HORNER_MAX_DEGREE {
+            points.to_vec()
+        } else {
+            points
+                .iter()
+                .enumerate()
+                .map(|(i, &p)| p * binomial(n, i))
+                .collect()
+        };
+        Self { coefficients }
     }
 
-    /// Evaluates the polynomial at `t` (any finite t in [0, 1]); `None` if there are no points.
+    /// B(t); `None` when built from no points.
     #[inline]
     #[must_use]
     pub fn eval(&self, t: f64) -> Option<T> {
-        let q = &self.scaled;
+        let q = &self.coefficients;
         let n = q.len().checked_sub(1)?;
+        if n > HORNER_MAX_DEGREE {
+            let mut row = vec![0.0; n + 1];
+            crate::bernstein::bernstein_row(t, &mut row);
+            return Some(
+                q.iter()
+                    .zip(&row)
+                    .fold(T::zero(), |acc, (&p, &b)| acc + p * b),
+            );
+        }
         if t <= 0.5 {
             let u = 1.0 - t;
             let s = t / u;

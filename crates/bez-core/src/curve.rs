@@ -6,11 +6,12 @@ use alloc::vec::Vec;
 use smallvec::SmallVec;
 
 use crate::casteljau::{
-    HornerBernstein, compensated_de_casteljau, de_casteljau, de_casteljau_split, elevate_slice,
-    hodograph_slice,
+    HornerBernstein, compensated_de_casteljau, de_casteljau, de_casteljau_in_place,
+    de_casteljau_split, elevate_slice, hodograph_slice,
 };
 use crate::error::{CoreError, check_unit};
 use crate::halve::de_casteljau_halve;
+use crate::limits::{MAX_COORDINATE, MAX_DEGREE, MAX_SAMPLES};
 
 /// A Bézier curve B(t) = Σ_{i=0}^{n} Pᵢ B_{i,n}(t), t ∈ [0, 1], in D dimensions.
 ///
@@ -92,15 +93,38 @@ fn eval_general<const D: usize>(points: &[Vector<D>], t: f64) -> Vector<D> {
     de_casteljau(points, t).unwrap_or_else(Vector::zeros)
 }
 
-/// Checks a list of control points: non-empty and finite.
+/// Checks a list of control points: non-empty, degree ≤ [`MAX_DEGREE`], finite and within
+/// ±[`MAX_COORDINATE`].
 pub(crate) fn validate_points<const D: usize>(points: &[Vector<D>]) -> Result<(), CoreError> {
     if points.is_empty() {
         return Err(CoreError::Empty);
     }
-    match points.iter().position(|p| !p.iter().all(|x| x.is_finite())) {
-        Some(index) => Err(CoreError::NonFinite { index }),
-        None => Ok(()),
+    if points.len() - 1 > MAX_DEGREE {
+        return Err(CoreError::DegreeTooHigh {
+            max: MAX_DEGREE,
+            degree: points.len() - 1,
+        });
     }
+    validate_coordinates(points)
+}
+
+/// Checks that every coordinate is finite and within ±[`MAX_COORDINATE`].
+pub(crate) fn validate_coordinates<const D: usize>(points: &[Vector<D>]) -> Result<(), CoreError> {
+    for (index, p) in points.iter().enumerate() {
+        for &value in p.iter() {
+            if !value.is_finite() {
+                return Err(CoreError::NonFinite { index });
+            }
+            if value.abs() > MAX_COORDINATE {
+                return Err(CoreError::CoordinateOutOfRange {
+                    index,
+                    value,
+                    max: MAX_COORDINATE,
+                });
+            }
+        }
+    }
+    Ok(())
 }
 
 impl<const D: usize> BezierCurve<D> {
@@ -239,13 +263,21 @@ impl<const D: usize> BezierCurve<D> {
     /// B(t) at `count` uniformly spaced parameters 0, 1/(count−1), …, 1.
     ///
     /// `count` = 0 gives an empty vector and `count` = 1 gives [B(0)].
-    #[must_use]
-    pub fn sample_uniform(&self, count: usize) -> Vec<Vector<D>> {
+    ///
+    /// # Errors
+    /// [`CoreError::TooLarge`] when `count` > [`MAX_SAMPLES`] (checked before allocating).
+    pub fn sample_uniform(&self, count: usize) -> Result<Vec<Vector<D>>, CoreError> {
+        if count > MAX_SAMPLES {
+            return Err(CoreError::TooLarge {
+                requested: count,
+                max: MAX_SAMPLES,
+            });
+        }
         let h = HornerBernstein::new(&self.points);
         let denom = count.saturating_sub(1).max(1) as f64;
-        (0..count)
+        Ok((0..count)
             .map(|k| h.eval(k as f64 / denom).unwrap_or_else(Vector::zeros))
-            .collect()
+            .collect())
     }
 
     /// B(t) by compensated de Casteljau (twice the working precision, then rounded).
@@ -302,8 +334,9 @@ impl<const D: usize> BezierCurve<D> {
         let mut left = zeroed_points::<D>(n);
         let mut right = zeroed_points::<D>(n);
         // Buffers have the right length by construction. At t = ½ the pairwise sums give the
-        // same points with about a third of the operations.
-        let _ = if t == 0.5 {
+        // same points with about a third of the operations, as long as the sums (up to 2ⁿ times
+        // the coordinates) cannot overflow: up to degree 100.
+        let _ = if t == 0.5 && n <= 101 {
             de_casteljau_halve(&self.points, &mut left, &mut right)
         } else {
             de_casteljau_split(&self.points, t, &mut left, &mut right)
@@ -344,62 +377,88 @@ impl<const D: usize> BezierCurve<D> {
     /// The derivative curve (hodograph) B'(t) = Σ n (Pᵢ₊₁ − Pᵢ) B_{i,n−1}(t), degree n − 1.
     ///
     /// The derivative of a degree-0 curve is the zero curve of degree 0.
-    #[must_use]
-    pub fn derivative(&self) -> Self {
-        Self::from_valid(hodograph_slice(&self.points))
-    }
-
-    /// The `order`-th derivative curve (order 0 is the curve itself).
-    #[must_use]
-    pub fn derivative_n(&self, order: usize) -> Self {
-        let mut c = self.clone();
-        for _ in 0..order {
-            c = c.derivative();
-        }
-        c
-    }
-
-    /// B(t) and its derivatives B'(t), …, B⁽ᵏ⁾(t) at one parameter, in one de Casteljau pass.
-    ///
-    /// Uses B⁽ʲ⁾(t) = n!/(n−j)! Δʲ P₀ⁿ⁻ʲ(t), the j-th forward difference of the de Casteljau
-    /// points of level n − j. Derivatives beyond the degree are zero. Cost O(n²).
     ///
     /// # Errors
-    /// [`CoreError::ParameterOutOfRange`] when t ∉ [0, 1].
-    pub fn eval_derivatives(&self, t: f64, k: usize) -> Result<Vec<Vector<D>>, CoreError> {
-        check_unit("t", t)?;
-        Ok(self.eval_derivatives_unchecked(t, k))
+    /// [`CoreError::Overflow`] when a control point of the hodograph leaves
+    /// ±[`MAX_COORDINATE`] (possible only for curves within a factor 2n of the limit).
+    pub fn derivative(&self) -> Result<Self, CoreError> {
+        Self::checked_result(hodograph_slice(&self.points), "derivative")
     }
 
+    /// The `order`-th derivative curve (order 0 is the curve itself; orders above the degree
+    /// give the zero curve of degree 0).
+    ///
+    /// # Errors
+    /// As [`Self::derivative`].
+    pub fn derivative_n(&self, order: usize) -> Result<Self, CoreError> {
+        let mut c = self.clone();
+        // Beyond the degree every further derivative is the zero curve.
+        for _ in 0..order.min(self.degree() + 1) {
+            c = c.derivative()?;
+        }
+        Ok(c)
+    }
+
+    /// A curve from computed points, or [`CoreError::Overflow`] if they left the contract's
+    /// range (see [`MAX_COORDINATE`]).
+    pub(crate) fn checked_result(
+        points: Vec<Vector<D>>,
+        operation: &'static str,
+    ) -> Result<Self, CoreError> {
+        match validate_points(&points) {
+            Ok(()) => Ok(Self::from_valid(points)),
+            Err(_) => Err(CoreError::Overflow { operation }),
+        }
+    }
+
+    /// B(t) and its derivatives B'(t), …, B⁽ᵏ⁾(t) at one parameter.
+    ///
+    /// B⁽ʲ⁾(t) = n!/(n−j)! Σᵢ Δʲ Pᵢ B_{i,n−j}(t): the forward differences of the control
+    /// points are taken first and then evaluated by de Casteljau, so the result does not
+    /// depend on where the curve sits (a translation changes no derivative, not even by
+    /// rounding). Derivatives beyond the degree are zero. Cost O(min(k, n) · n²).
+    ///
+    /// # Errors
+    /// [`CoreError::ParameterOutOfRange`] when t ∉ [0, 1]; [`CoreError::TooLarge`] when
+    /// k > [`MAX_DEGREE`]; [`CoreError::Overflow`] when a derivative is not representable.
+    pub fn eval_derivatives(&self, t: f64, k: usize) -> Result<Vec<Vector<D>>, CoreError> {
+        check_unit("t", t)?;
+        if k > MAX_DEGREE {
+            return Err(CoreError::TooLarge {
+                requested: k,
+                max: MAX_DEGREE,
+            });
+        }
+        let out = self.eval_derivatives_unchecked(t, k);
+        if out.iter().all(Vector::is_finite) {
+            Ok(out)
+        } else {
+            Err(CoreError::Overflow {
+                operation: "eval_derivatives",
+            })
+        }
+    }
+
+    /// [`Self::eval_derivatives`] for t in [0, 1] and k ≤ [`MAX_DEGREE`], unchecked for
+    /// overflow.
     pub(crate) fn eval_derivatives_unchecked(&self, t: f64, k: usize) -> Vec<Vector<D>> {
         let n = self.degree();
         let mut out = vec![Vector::<D>::zeros(); k + 1];
-        let mut work = self.points.clone();
-        let s = 1.0 - t;
-        // Level 0 holds n + 1 points; level r holds n + 1 − r.
-        for r in 0..=n {
-            if r > 0 {
-                for i in 0..=n - r {
-                    work[i] = work[i] * s + work[i + 1] * t;
+        let mut diffs: Vec<Vector<D>> = self.points.to_vec();
+        let mut work: Vec<Vector<D>> = Vec::with_capacity(n + 1);
+        let mut falling = 1.0;
+        for (j, slot) in out.iter_mut().enumerate().take(n + 1) {
+            if j > 0 {
+                // Δʲ Pᵢ = Δʲ⁻¹ Pᵢ₊₁ − Δʲ⁻¹ Pᵢ, and n!/(n−j)! one factor further.
+                for i in 0..=n - j {
+                    diffs[i] = diffs[i + 1] - diffs[i];
                 }
+                diffs.truncate(n + 1 - j);
+                falling *= (n + 1 - j) as f64;
             }
-            let j = n - r; // order of the derivative read off this level
-            if j <= k {
-                let mut diff = Vector::<D>::zeros();
-                for (i, w) in work[..=j].iter().enumerate() {
-                    let c = crate::bernstein::binomial(j, i);
-                    if (j - i).is_multiple_of(2) {
-                        diff += w * c;
-                    } else {
-                        diff -= w * c;
-                    }
-                }
-                let mut falling = 1.0;
-                for q in 0..j {
-                    falling *= (n - q) as f64;
-                }
-                out[j] = diff * falling;
-            }
+            work.clear();
+            work.extend_from_slice(&diffs);
+            *slot = de_casteljau_in_place(&mut work, t).unwrap_or_else(Vector::zeros) * falling;
         }
         out
     }
@@ -409,14 +468,17 @@ impl<const D: usize> BezierCurve<D> {
     /// Each step Qᵢ = i/(n+1) Pᵢ₋₁ + (1 − i/(n+1)) Pᵢ; the curve is unchanged.
     ///
     /// # Errors
-    /// [`CoreError::TooLarge`] when n + r overflows or exceeds 2²⁰ control points.
+    /// [`CoreError::DegreeTooHigh`] when n + r exceeds [`MAX_DEGREE`] (checked before
+    /// allocating).
     pub fn elevate(&self, r: usize) -> Result<Self, CoreError> {
-        let len = self
-            .points
-            .len()
-            .checked_add(r)
-            .filter(|&l| l <= 1 << 20)
-            .ok_or(CoreError::TooLarge { requested: r })?;
+        let degree = self.degree().saturating_add(r);
+        if degree > MAX_DEGREE {
+            return Err(CoreError::DegreeTooHigh {
+                max: MAX_DEGREE,
+                degree,
+            });
+        }
+        let len = degree + 1;
         let p = elevate_slice(&self.points, r);
         debug_assert_eq!(p.len(), len);
         Ok(Self::from_valid(p))
@@ -486,9 +548,9 @@ mod tests {
         for &t in &[0.0, 0.3, 1.0] {
             let d = c.eval_derivatives(t, 4).unwrap();
             assert!((d[0] - c.eval(t).unwrap()).norm() < 1e-14);
-            assert!((d[1] - c.derivative().eval(t).unwrap()).norm() < 1e-13);
-            assert!((d[2] - c.derivative_n(2).eval(t).unwrap()).norm() < 1e-12);
-            assert!((d[3] - c.derivative_n(3).eval(t).unwrap()).norm() < 1e-12);
+            assert!((d[1] - c.derivative().unwrap().eval(t).unwrap()).norm() < 1e-13);
+            assert!((d[2] - c.derivative_n(2).unwrap().eval(t).unwrap()).norm() < 1e-12);
+            assert!((d[3] - c.derivative_n(3).unwrap().eval(t).unwrap()).norm() < 1e-12);
             assert_eq!(d[4], Vector2::zeros());
         }
     }

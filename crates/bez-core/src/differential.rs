@@ -26,7 +26,8 @@ impl<const D: usize> BezierCurve<D> {
         check_unit("t", t)?;
         let d = self.eval_derivatives_unchecked(t, k);
         let n = self.degree().max(1) as f64;
-        if d[1].norm() <= DEGENERATE * n * self.scale() {
+        let s = math::pow2_scale(d[1].amax());
+        if (d[1] / s).norm() * s <= DEGENERATE * n * self.scale() {
             return Err(CoreError::ZeroTangent { t });
         }
         Ok(d)
@@ -41,11 +42,13 @@ impl<const D: usize> BezierCurve<D> {
     /// vanishes (relative to the control polygon's size).
     pub fn curvature(&self, t: f64) -> Result<f64, CoreError> {
         let d = self.tangent_checked(t, 2)?;
-        let (a, b) = (d[1], d[2]);
+        // B' = s_a a and B'' = s_b b with powers of two s (exact), so |a|³ cannot overflow:
+        // κ = (s_b / s_a²) |a ∧ b| / |a|³.
+        let ([a, b], [sa, sb]) = scaled([d[1], d[2]]);
         let an = a.norm();
         let ab = a.dot(&b);
         let wedge2 = (a.norm_squared() * b.norm_squared() - ab * ab).max(0.0);
-        Ok(math::sqrt(wedge2) / (an * an * an))
+        Ok(math::sqrt(wedge2) / (an * an * an) * (sb / sa) / sa)
     }
 }
 
@@ -56,9 +59,9 @@ impl BezierCurve<2> {
     /// As [`BezierCurve::curvature`].
     pub fn signed_curvature(&self, t: f64) -> Result<f64, CoreError> {
         let d = self.tangent_checked(t, 2)?;
-        let (a, b) = (d[1], d[2]);
+        let ([a, b], [sa, sb]) = scaled([d[1], d[2]]);
         let an = a.norm();
-        Ok((a.x() * b.y() - a.y() * b.x()) / (an * an * an))
+        Ok((a.x() * b.y() - a.y() * b.x()) / (an * an * an) * (sb / sa) / sa)
     }
 }
 
@@ -70,14 +73,22 @@ impl BezierCurve<3> {
     /// [`CoreError::ZeroCurvature`] where B' × B'' vanishes (torsion undefined).
     pub fn torsion(&self, t: f64) -> Result<f64, CoreError> {
         let d = self.tangent_checked(t, 3)?;
-        let c = d[1].cross(&d[2]);
+        // Scaled as in curvature: τ = s_c / (s_a s_b) · (a × b) · c / |a × b|².
+        let ([a, b, e], [sa, sb, sc]) = scaled([d[1], d[2], d[3]]);
+        let c = a.cross(&b);
         let c2 = c.norm_squared();
-        let scale = d[1].norm() * d[2].norm();
+        let scale = a.norm() * b.norm();
         if math::sqrt(c2) <= DEGENERATE * scale || c2 == 0.0 {
             return Err(CoreError::ZeroCurvature { t });
         }
-        Ok(c.dot(&d[3]) / c2)
+        Ok(c.dot(&e) / c2 * (sc / sa) / sb)
     }
+}
+
+/// Each vector divided by the power of two of its largest coordinate (exact), and the powers.
+fn scaled<const D: usize, const K: usize>(v: [Vector<D>; K]) -> ([Vector<D>; K], [f64; K]) {
+    let s = v.map(|x| math::pow2_scale(x.amax()));
+    (core::array::from_fn(|i| v[i] / s[i]), s)
 }
 
 #[cfg(test)]

@@ -103,8 +103,9 @@ pub enum CoreError {
         /// Index of the offending path element.
         index: usize,
     },
-    /// A path element has a NaN or infinite coordinate.
-    #[error("path element {index} has a non-finite coordinate")]
+    /// A path element has a NaN or infinite coordinate, or one outside
+    /// ±[`MAX_COORDINATE`](crate::MAX_COORDINATE).
+    #[error("path element {index} has a non-finite or out-of-range coordinate")]
     NonFinitePathElement {
         /// Index of the offending path element.
         index: usize,
@@ -112,6 +113,14 @@ pub enum CoreError {
     /// A query point is not finite.
     #[error("query point has a non-finite coordinate")]
     NonFiniteQuery,
+    /// A query point has a coordinate outside ±[`MAX_COORDINATE`](crate::MAX_COORDINATE).
+    #[error("query point has coordinate {value}, outside ±{max}")]
+    QueryOutOfRange {
+        /// The coordinate.
+        value: f64,
+        /// The limit.
+        max: f64,
+    },
     /// An output buffer has the wrong length.
     #[error("buffer has length {len}, expected {expected}")]
     BufferLength {
@@ -120,11 +129,31 @@ pub enum CoreError {
         /// The length needed.
         expected: usize,
     },
-    /// A request is too large to be represented (e.g. an elevation that overflows).
-    #[error("requested size {requested} is too large")]
+    /// A size the caller chose (a sample count, a derivative order, a grid shape) is above
+    /// its documented limit.
+    #[error("requested size {requested} is above the limit {max}")]
     TooLarge {
         /// The size requested.
         requested: usize,
+        /// The largest size accepted.
+        max: usize,
+    },
+    /// A control point coordinate is finite but outside ±[`MAX_COORDINATE`](crate::MAX_COORDINATE).
+    #[error("control point {index} has coordinate {value}, outside ±{max}")]
+    CoordinateOutOfRange {
+        /// Index of the offending control point (row-major for surfaces).
+        index: usize,
+        /// The coordinate.
+        value: f64,
+        /// The limit, [`MAX_COORDINATE`](crate::MAX_COORDINATE).
+        max: f64,
+    },
+    /// A result would leave the range of finite, representable values (e.g. a high-order
+    /// derivative of a large curve).
+    #[error("{operation}: the result is too large to represent")]
+    Overflow {
+        /// The operation that overflowed.
+        operation: &'static str,
     },
 }
 

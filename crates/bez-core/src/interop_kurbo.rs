@@ -153,8 +153,10 @@ impl TryFrom<BezierCurve<2>> for CubicBez {
 }
 
 /// Whether both coordinates of every point are finite.
+/// Finite and within the coordinate contract ([`MAX_COORDINATE`](crate::MAX_COORDINATE)).
 fn all_finite(points: &[Point]) -> bool {
-    points.iter().all(|p| p.x.is_finite() && p.y.is_finite())
+    let ok = |x: f64| x.is_finite() && x.abs() <= crate::MAX_COORDINATE;
+    points.iter().all(|p| ok(p.x) && ok(p.y))
 }
 
 /// The segments of a kurbo path as curves, one list per subpath.

@@ -102,6 +102,7 @@ mod interop_kurbo;
 mod interop_mint;
 #[cfg(feature = "nalgebra")]
 mod interop_nalgebra;
+mod limits;
 mod math;
 mod nearest;
 mod reduce;
@@ -120,14 +121,16 @@ pub use crate::bernstein::{
 };
 pub use crate::bezier_form::BezierForm;
 pub use crate::casteljau::{
-    ControlPoint, HornerBernstein, compensated_de_casteljau, de_casteljau, de_casteljau_in_place,
-    de_casteljau_split, de_casteljau_split_array, elevate_slice, hodograph_slice, lerp,
+    ControlPoint, HORNER_MAX_DEGREE, HornerBernstein, compensated_de_casteljau, de_casteljau,
+    de_casteljau_in_place, de_casteljau_split, de_casteljau_split_array, elevate_slice,
+    hodograph_slice, lerp,
 };
 pub use crate::curve::BezierCurve;
 pub use crate::error::CoreError;
 pub use crate::halve::{de_casteljau_halve, de_casteljau_halve_array, de_casteljau_halve_in_place};
 #[cfg(feature = "kurbo")]
 pub use crate::interop_kurbo::{bez_path_to_curves, curves_to_bez_path};
+pub use crate::limits::{MAX_COORDINATE, MAX_DEGREE, MAX_SAMPLES};
 pub use crate::nearest::Nearest;
 pub use crate::reduce::Reduced;
 pub use crate::roots::roots_in_unit_interval;

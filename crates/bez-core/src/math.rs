@@ -79,6 +79,18 @@ pub(crate) fn fma(a: f64, b: f64, c: f64) -> f64 {
     }
 }
 
+/// The power of two 2ᵉ with 2ᵉ ≤ x < 2ᵉ⁺¹ for a positive normal x, else 1: dividing by it
+/// brings x into [1, 2) exactly (no rounding), so a computation on scaled values and scaled
+/// back gives the same bits as the unscaled one wherever that one does not overflow.
+#[inline]
+pub(crate) fn pow2_scale(x: f64) -> f64 {
+    if x.is_normal() && x > 0.0 {
+        f64::from_bits(x.to_bits() & 0x7ff0_0000_0000_0000)
+    } else {
+        1.0
+    }
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -94,5 +106,17 @@ mod tests {
         assert_eq!(hypot(3e300, 4e300), 5e300);
         // 0.1 * 10 - 1 is 0 in two roundings; the fused product keeps the representation error.
         assert_eq!(fma(0.1, 10.0, -1.0), 5.551115123125783e-17);
+    }
+
+    #[test]
+    fn pow2_scale_is_the_leading_power_of_two() {
+        assert_eq!(pow2_scale(1.0), 1.0);
+        assert_eq!(pow2_scale(1.999), 1.0);
+        assert_eq!(pow2_scale(2.0), 2.0);
+        assert_eq!(pow2_scale(0.3), 0.25);
+        assert_eq!(pow2_scale(1e300), 2f64.powi(996));
+        for x in [0.0, -1.0, f64::INFINITY, f64::NAN, f64::MIN_POSITIVE / 4.0] {
+            assert_eq!(pow2_scale(x), 1.0);
+        }
     }
 }

@@ -5,8 +5,11 @@ use alloc::vec;
 use alloc::vec::Vec;
 
 use crate::bernstein::bernstein_product;
+use crate::casteljau::hodograph_slice;
 use crate::curve::BezierCurve;
 use crate::error::CoreError;
+use crate::limits::MAX_COORDINATE;
+use crate::math;
 use crate::roots::roots_in_unit_interval;
 
 /// The result of a nearest-point query.
@@ -30,21 +33,37 @@ impl<const D: usize> BezierCurve<D> {
     /// local one. Cost O(n²) plus root isolation.
     ///
     /// # Errors
-    /// [`CoreError::NonFiniteQuery`] when `p` has a NaN or infinite coordinate.
+    /// [`CoreError::NonFiniteQuery`] when `p` has a NaN or infinite coordinate,
+    /// [`CoreError::QueryOutOfRange`] when one is outside ±[`MAX_COORDINATE`].
     pub fn nearest(&self, p: &Vector<D>) -> Result<Nearest<D>, CoreError> {
         if !p.iter().all(|x| x.is_finite()) {
             return Err(CoreError::NonFiniteQuery);
         }
-        let hodo = self.derivative();
+        if let Some(&value) = p.iter().find(|x| x.abs() > MAX_COORDINATE) {
+            return Err(CoreError::QueryOutOfRange {
+                value,
+                max: MAX_COORDINATE,
+            });
+        }
+        let hodo = hodograph_slice(self.points());
+        // Both factors scaled by powers of two into [1, 2) (exact; the roots do not change),
+        // so the product's coefficients cannot overflow.
+        let scale_a = math::pow2_scale(
+            self.points()
+                .iter()
+                .map(|q| (q - p).amax())
+                .fold(0.0, f64::max),
+        );
+        let scale_b = math::pow2_scale(hodo.iter().map(Vector::amax).fold(0.0, f64::max));
         let mut poly: Vec<f64> = Vec::new();
         let mut a = vec![0.0; self.points().len()];
-        let mut b = vec![0.0; hodo.points().len()];
+        let mut b = vec![0.0; hodo.len()];
         for d in 0..D {
             for (x, q) in a.iter_mut().zip(self.points()) {
-                *x = q[d] - p[d];
+                *x = (q[d] - p[d]) / scale_a;
             }
-            for (x, q) in b.iter_mut().zip(hodo.points()) {
-                *x = q[d];
+            for (x, q) in b.iter_mut().zip(&hodo) {
+                *x = q[d] / scale_b;
             }
             let prod = bernstein_product(&a, &b);
             if poly.is_empty() {

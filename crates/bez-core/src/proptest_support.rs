@@ -66,8 +66,8 @@ pub fn check_bezier_form<const D: usize, C: BezierForm<D> + ?Sized>(
     let ts: Vec<f64> = (0..=M).map(|k| k as f64 / M as f64).collect();
     let mut many = Vec::new();
     curve.eval_many(&ts, &mut many).map_err(fail)?;
-    let uniform = curve.sample_uniform(M + 1);
-    let hodograph = curve.derivative();
+    let uniform = curve.sample_uniform(M + 1).map_err(fail)?;
+    let hodograph = curve.derivative().map_err(fail)?;
     let dtol = tolerance * (curve.degree().max(1) as f64);
     let (mut samples, mut max_speed) = (Vec::with_capacity(M + 1), 0.0_f64);
     for (k, &t) in ts.iter().enumerate() {

@@ -31,8 +31,8 @@ impl<const D: usize> BezierCurve<D> {
     /// that curve and the bound is at rounding level. Cost O(n·D).
     ///
     /// # Errors
-    /// [`CoreError::DegreeTooLow`] for a degree-0 curve; [`CoreError::NonFinite`] if a reduced
-    /// control point overflows.
+    /// [`CoreError::DegreeTooLow`] for a degree-0 curve; [`CoreError::Overflow`] if a reduced
+    /// control point leaves ±[`MAX_COORDINATE`](crate::MAX_COORDINATE).
     pub fn reduce_degree(&self) -> Result<Reduced<D>, CoreError> {
         let n = self.degree();
         if n == 0 {
@@ -42,19 +42,14 @@ impl<const D: usize> BezierCurve<D> {
             });
         }
         let points = least_squares_elevation(self.points());
-        if let Some(index) = points.iter().position(|p| !p.is_finite()) {
-            return Err(CoreError::NonFinite { index });
-        }
+        let curve = BezierCurve::checked_result(points, "reduce_degree")?;
         let error_bound = self
             .points()
             .iter()
             .enumerate()
-            .map(|(i, p)| (elevated_point(&points, i) - p).norm())
+            .map(|(i, p)| (elevated_point(curve.points(), i) - p).norm())
             .fold(0.0, f64::max);
-        Ok(Reduced {
-            curve: BezierCurve::from_valid(points),
-            error_bound,
-        })
+        Ok(Reduced { curve, error_bound })
     }
 }
 

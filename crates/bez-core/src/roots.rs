@@ -1,6 +1,7 @@
 //! Real roots of a scalar polynomial in Bernstein form on [0, 1].
 
 use crate::bernstein::eval_bernstein_poly;
+use crate::casteljau::de_casteljau_split;
 use crate::halve::de_casteljau_halve;
 use alloc::vec;
 use alloc::vec::Vec;
@@ -105,7 +106,13 @@ fn isolate(c: &[f64], a: f64, b: f64, depth: usize, roots: &mut Vec<(f64, bool)>
     }
     let mut left = vec![0.0; n + 1];
     let mut right = vec![0.0; n + 1];
-    if de_casteljau_halve(c, &mut left, &mut right).is_err() {
+    // Pairwise sums (exact halving) up to degree 100; above, their 2ⁿ growth could overflow.
+    let halved = if n <= 100 {
+        de_casteljau_halve(c, &mut left, &mut right)
+    } else {
+        de_casteljau_split(c, 0.5, &mut left, &mut right)
+    };
+    if halved.is_err() {
         return;
     }
     let m = 0.5 * (a + b);

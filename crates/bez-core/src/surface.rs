@@ -5,8 +5,9 @@ use alloc::vec;
 use alloc::vec::Vec;
 
 use crate::casteljau::{de_casteljau, de_casteljau_split, elevate_slice, hodograph_slice};
-use crate::curve::{BezierCurve, validate_points};
+use crate::curve::{BezierCurve, validate_coordinates};
 use crate::error::{CoreError, check_unit};
+use crate::limits::MAX_DEGREE;
 
 /// A tensor-product Bézier surface S(u, v) = Σᵢ Σⱼ P_{ij} B_{i,m}(u) B_{j,n}(v).
 ///
@@ -89,22 +90,25 @@ impl<const D: usize> BezierSurface<D> {
     /// Creates a surface of bidegree (m, n) from a row-major list of (m+1)(n+1) points.
     ///
     /// # Errors
-    /// [`CoreError::GridShape`] when the count does not match, [`CoreError::NonFinite`] for a
-    /// non-finite coordinate, [`CoreError::TooLarge`] when the shape overflows.
+    /// [`CoreError::DegreeTooHigh`] for a degree above [`MAX_DEGREE`], [`CoreError::GridShape`]
+    /// when the count does not match, [`CoreError::NonFinite`] for a non-finite coordinate,
+    /// [`CoreError::CoordinateOutOfRange`] for one outside
+    /// ±[`MAX_COORDINATE`](crate::MAX_COORDINATE).
     pub fn from_flat(
         degree_u: usize,
         degree_v: usize,
         points: Vec<Vector<D>>,
     ) -> Result<Self, CoreError> {
-        let rows = degree_u.checked_add(1).ok_or(CoreError::TooLarge {
-            requested: degree_u,
-        })?;
-        let cols = degree_v.checked_add(1).ok_or(CoreError::TooLarge {
-            requested: degree_v,
-        })?;
-        let expected = rows.checked_mul(cols).ok_or(CoreError::TooLarge {
-            requested: degree_u,
-        })?;
+        let degree = degree_u.max(degree_v);
+        if degree > MAX_DEGREE {
+            return Err(CoreError::DegreeTooHigh {
+                max: MAX_DEGREE,
+                degree,
+            });
+        }
+        // At most 4097² points: no overflow.
+        let (rows, cols) = (degree_u + 1, degree_v + 1);
+        let expected = rows * cols;
         if points.len() != expected {
             return Err(CoreError::GridShape {
                 rows,
@@ -113,7 +117,7 @@ impl<const D: usize> BezierSurface<D> {
                 len: points.len(),
             });
         }
-        validate_points(&points)?;
+        validate_coordinates(&points)?;
         Ok(Self {
             degree_u,
             degree_v,
@@ -235,36 +239,54 @@ impl<const D: usize> BezierSurface<D> {
 
     /// The partial derivative ∂^{p+q} S / ∂uᵖ ∂v^q as a Bézier surface of bidegree
     /// (max(m − p, 0), max(n − q, 0)) (hodographs in each direction; zero beyond the degree).
-    #[must_use]
-    pub fn partial(&self, p: usize, q: usize) -> Self {
+    ///
+    /// # Errors
+    /// [`CoreError::Overflow`] when a control point of the result leaves
+    /// ±[`MAX_COORDINATE`](crate::MAX_COORDINATE).
+    pub fn partial(&self, p: usize, q: usize) -> Result<Self, CoreError> {
         let mut s = self.clone();
-        for _ in 0..p {
+        // Beyond the degree every further derivative is the zero surface.
+        for _ in 0..p.min(self.degree_u + 1) {
             s = s.map_columns(hodograph_slice);
         }
-        for _ in 0..q {
+        for _ in 0..q.min(self.degree_v + 1) {
             s = s.map_rows(hodograph_slice);
         }
-        s
+        match validate_coordinates(&s.points) {
+            Ok(()) => Ok(s),
+            Err(_) => Err(CoreError::Overflow {
+                operation: "partial",
+            }),
+        }
     }
 
     /// The value of ∂^{p+q} S / ∂uᵖ ∂v^q at (u, v).
     ///
     /// # Errors
-    /// [`CoreError::ParameterOutOfRange`] when u or v ∉ [0, 1].
+    /// [`CoreError::ParameterOutOfRange`] when u or v ∉ [0, 1]; as [`Self::partial`].
     pub fn eval_partial(&self, u: f64, v: f64, p: usize, q: usize) -> Result<Vector<D>, CoreError> {
-        self.partial(p, q).eval(u, v)
+        check_unit("u", u)?;
+        check_unit("v", v)?;
+        self.partial(p, q)?.eval(u, v)
     }
 
     /// The same surface with degree m + r in u (exact elevation of every column).
-    #[must_use]
-    pub fn elevate_u(&self, r: usize) -> Self {
-        self.map_columns(|c| elevate_slice(c, r))
+    ///
+    /// # Errors
+    /// [`CoreError::DegreeTooHigh`] when m + r exceeds [`MAX_DEGREE`] (checked before
+    /// allocating).
+    pub fn elevate_u(&self, r: usize) -> Result<Self, CoreError> {
+        check_elevation(self.degree_u, r)?;
+        Ok(self.map_columns(|c| elevate_slice(c, r)))
     }
 
     /// The same surface with degree n + r in v (exact elevation of every row).
-    #[must_use]
-    pub fn elevate_v(&self, r: usize) -> Self {
-        self.map_rows(|c| elevate_slice(c, r))
+    ///
+    /// # Errors
+    /// As [`Self::elevate_u`].
+    pub fn elevate_v(&self, r: usize) -> Result<Self, CoreError> {
+        check_elevation(self.degree_v, r)?;
+        Ok(self.map_rows(|c| elevate_slice(c, r)))
     }
 
     /// Splits at u = t into the patches on [0, t] × [0, 1] and [t, 1] × [0, 1].
@@ -315,6 +337,18 @@ impl BezierSurface<3> {
         }
         Ok(n / len)
     }
+}
+
+/// [`CoreError::DegreeTooHigh`] unless degree + r ≤ [`MAX_DEGREE`].
+fn check_elevation(degree: usize, r: usize) -> Result<(), CoreError> {
+    let elevated = degree.saturating_add(r);
+    if elevated > MAX_DEGREE {
+        return Err(CoreError::DegreeTooHigh {
+            max: MAX_DEGREE,
+            degree: elevated,
+        });
+    }
+    Ok(())
 }
 
 #[cfg(test)]
@@ -370,7 +404,7 @@ mod tests {
     #[test]
     fn elevation_and_split_preserve_the_surface() {
         let s = patch();
-        let e = s.elevate_u(2).elevate_v(1);
+        let e = s.elevate_u(2).unwrap().elevate_v(1).unwrap();
         let (a, b) = s.split_u(0.4).unwrap();
         let (c, _) = s.split_v(0.25).unwrap();
         for &(u, v) in &[(0.1, 0.2), (0.5, 0.5), (0.9, 0.7)] {

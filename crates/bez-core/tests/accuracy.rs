@@ -5,7 +5,7 @@
     reason = "tests fail loudly on unexpected errors"
 )]
 
-use bez_core::{BezierCurve, Vector, compensated_de_casteljau, de_casteljau};
+use bez_core::{BezierCurve, Vector, Vector2, compensated_de_casteljau, de_casteljau};
 mod common;
 
 use common::{Q, binom, q};
@@ -99,5 +99,56 @@ fn subsegment_is_accurate_at_degree_100() {
         let t = a + s * (b - a);
         let exact = exact_eval(&exact_pts, &q(t)).to_f64().unwrap();
         assert!((sub.eval(s).unwrap()[0] - exact).abs() < 1e-12, "s = {s}");
+    }
+}
+
+/// Derivatives are formed from control-point differences, and the measures are scaled by
+/// powers of two internally: a curve translated by 2³⁰ (exactly, dyadic coordinates) has the
+/// same derivatives bit for bit, and one scaled by 2^±480 has the scaled curvature, arc length
+/// and nearest parameter, even where |B'|³ or squared distances would leave the f64 range.
+#[test]
+fn derivatives_and_measures_do_not_depend_on_where_the_curve_sits() {
+    let mut state = 0x9e37_79b9_7f4a_7c15_u64;
+    let mut next = || {
+        state = state
+            .wrapping_mul(6_364_136_223_846_793_005)
+            .wrapping_add(1);
+        ((state >> 40) % 129) as f64 / 64.0 - 1.0
+    };
+    for degree in 2..=7 {
+        let pts: Vec<Vector2> = (0..=degree).map(|_| Vector2::new(next(), next())).collect();
+        let c = BezierCurve::new(pts.clone()).unwrap();
+        let offset = Vector2::new(2f64.powi(30), -(2f64.powi(30)));
+        let moved = BezierCurve::new(pts.iter().map(|p| p + offset).collect()).unwrap();
+        for &t in &[0.0, 0.3, 0.71, 1.0] {
+            let (a, b) = (
+                c.eval_derivatives(t, 3).unwrap(),
+                moved.eval_derivatives(t, 3).unwrap(),
+            );
+            assert_eq!(a[1..], b[1..], "degree {degree}, t = {t}");
+            if let (Ok(k), Ok(km)) = (c.curvature(t), moved.curvature(t)) {
+                assert_eq!(k, km);
+            }
+        }
+        for e in [480, -480] {
+            let s = 2f64.powi(e);
+            let scaled = BezierCurve::new(pts.iter().map(|p| p * s).collect()).unwrap();
+            for &t in &[0.0, 0.3, 0.71, 1.0] {
+                if let (Ok(k), Ok(ks)) = (c.curvature(t), scaled.curvature(t)) {
+                    assert!(
+                        (ks * s / k - 1.0).abs() < 1e-14,
+                        "degree {degree}, 2^{e}: {k} vs {ks}"
+                    );
+                }
+            }
+            let (l, ls) = (
+                c.arc_length(1e-12).unwrap(),
+                scaled.arc_length(1e-12 * s).unwrap(),
+            );
+            assert!((ls / s / l - 1.0).abs() < 1e-14, "arc length {l} vs {ls}");
+            let q = Vector2::new(0.25, 0.5);
+            let (n, ns) = (c.nearest(&q).unwrap(), scaled.nearest(&(q * s)).unwrap());
+            assert!((n.t - ns.t).abs() < 1e-12, "nearest t {} vs {}", n.t, ns.t);
+        }
     }
 }

@@ -91,7 +91,7 @@ proptest! {
             }
             prop_assert!(close(ours, &acc, scale));
         }
-        let d = c.derivative();
+        let d = c.derivative().unwrap();
         let nq = Q::from_usize(n).unwrap();
         for (i, ours) in d.points().iter().enumerate() {
             let ex = [&nq * (&p[i + 1][0] - &p[i][0]), &nq * (&p[i + 1][1] - &p[i][1])];

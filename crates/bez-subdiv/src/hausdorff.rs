@@ -78,7 +78,7 @@ fn hausdorff_bezier(
             .fold(f64::INFINITY, f64::min)
     };
     let mut h = curve
-        .sample_uniform(sampling.curve_samples)
+        .sample_uniform(sampling.curve_samples)?
         .iter()
         .map(to_polyline)
         .fold(0.0_f64, f64::max);
@@ -123,7 +123,7 @@ mod tests {
         // A polyline that runs on to (3, 0) is 2 beyond the curve's end point (1, 0) there,
         // although every curve point is close to the polyline.
         let c = parabola();
-        let mut poly: Vec<_> = c.sample_uniform(2001);
+        let mut poly: Vec<_> = c.sample_uniform(2001).unwrap();
         poly.push(Vector2::new(3.0, 0.0));
         let h = measured_hausdorff(&c, &poly, HausdorffSampling::default()).unwrap();
         assert!((h - 2.0).abs() < 1e-9, "{h}");

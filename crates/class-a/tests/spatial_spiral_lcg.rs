@@ -164,7 +164,7 @@ fn derivatives_match_finite_differences() {
     let (tau, taus) = torsion_with_derivative(&c, t).unwrap();
     assert!((k - c.curvature(t).unwrap()).abs() < 1e-12 * k.max(1.0));
     assert!((tau - c.torsion(t).unwrap()).abs() < 1e-9 * tau.abs().max(1e-9));
-    let speed = c.derivative().eval(t).unwrap().norm();
+    let speed = c.derivative().unwrap().eval(t).unwrap().norm();
     let kd = (c.curvature(t + h).unwrap() - c.curvature(t - h).unwrap()) / (2.0 * h) / speed;
     let td = (c.torsion(t + h).unwrap() - c.torsion(t - h).unwrap()) / (2.0 * h) / speed;
     assert!((ks - kd).abs() < 1e-5 * ks.abs().max(1e-9), "{ks} {kd}");

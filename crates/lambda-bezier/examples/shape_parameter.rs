@@ -29,7 +29,7 @@ fn main() -> Result<(), LambdaError> {
     let mut curve = LambdaBezierCurve::new(points, 0.0)?;
     for lambda in [-3.0, -1.0, 0.0, 0.4, 0.56, 0.7, 1.0] {
         curve.set_lambda(lambda)?;
-        let samples = curve.sample_uniform(2001);
+        let samples = curve.sample_uniform(2001)?;
         let deviation = samples
             .iter()
             .map(|p| (p.norm() - 1.0).abs())

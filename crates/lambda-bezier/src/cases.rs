@@ -238,8 +238,9 @@ mod tests {
         let e = circle_error(CIRCLE_LAMBDA).unwrap();
         let sampled = upper
             .sample_uniform(20001)
+            .unwrap()
             .iter()
-            .chain(lower.sample_uniform(20001).iter())
+            .chain(lower.sample_uniform(20001).unwrap().iter())
             .map(|p| (p.norm() - 1.0).abs())
             .fold(0.0, f64::max);
         assert!(sampled <= e + 1e-15 && sampled > e - 1e-8, "{sampled} {e}");
@@ -264,7 +265,7 @@ mod tests {
                 assert_eq!(v.len(), 6);
                 // A vase profile: positive radius, height increasing.
                 for c in &v {
-                    let q = c.sample_uniform(50);
+                    let q = c.sample_uniform(50).unwrap();
                     assert!(q.iter().all(|p| p.x() > 0.3));
                     assert!(q.windows(2).all(|w| w[1].y() > w[0].y()));
                 }

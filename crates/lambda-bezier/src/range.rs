@@ -53,7 +53,11 @@ impl LambdaRange {
             return Err(LambdaError::DegreeTooLow { n });
         }
         if n > MAX_N {
-            return Err(bez_core::CoreError::TooLarge { requested: n }.into());
+            return Err(bez_core::CoreError::TooLarge {
+                requested: n,
+                max: MAX_N,
+            }
+            .into());
         }
         // j(n+1−2j) is a concave parabola in j with its peak at (n+1)/4: the integer maximum is at
         // floor or ceil of it (both ≥ 1 and ≤ n for n ≥ 2).

@@ -168,9 +168,11 @@ impl<const D: usize> LambdaBezierSurface<D> {
     }
 
     /// ∂^{p+q} B / ∂u^p ∂v^q as a Bézier surface.
-    #[must_use]
-    pub fn partial(&self, p: usize, q: usize) -> BezierSurface<D> {
-        self.bezier.partial(p, q)
+    ///
+    /// # Errors
+    /// As [`BezierSurface::partial`] (a result outside the coordinate range).
+    pub fn partial(&self, p: usize, q: usize) -> Result<BezierSurface<D>, LambdaError> {
+        Ok(self.bezier.partial(p, q)?)
     }
 }
 
@@ -238,7 +240,7 @@ mod tests {
         }
         assert_eq!(s.as_bezier().degree_u(), n + 1);
         assert_eq!(s.as_bezier().degree_v(), m + 1);
-        assert_eq!(s.partial(1, 1).degree_u(), n);
+        assert_eq!(s.partial(1, 1).unwrap().degree_u(), n);
     }
 
     #[test]

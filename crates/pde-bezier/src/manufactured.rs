@@ -15,13 +15,15 @@ pub fn apply_operator(op: &Operator, x: &BezierSurface<3>) -> Result<BezierSurfa
     let parts: Vec<(f64, BezierSurface<3>)> = op
         .terms()
         .iter()
-        .map(|t| (t.coeff, x.partial(t.du, t.dv)))
-        .collect();
+        .map(|t| Ok((t.coeff, x.partial(t.du, t.dv)?)))
+        .collect::<Result<_, PdeError>>()?;
     let du = parts.iter().map(|(_, s)| s.degree_u()).max().unwrap_or(0);
     let dv = parts.iter().map(|(_, s)| s.degree_v()).max().unwrap_or(0);
     let mut points = vec![Vector3::zeros(); (du + 1) * (dv + 1)];
     for (c, s) in parts {
-        let s = s.elevate_u(du - s.degree_u()).elevate_v(dv - s.degree_v());
+        let s = s
+            .elevate_u(du - s.degree_u())?
+            .elevate_v(dv - s.degree_v())?;
         for (p, q) in points.iter_mut().zip(s.points()) {
             *p += q * c;
         }
@@ -41,9 +43,9 @@ pub fn side_of(x: &BezierSurface<3>, side: usize, count: usize) -> Result<Side, 
     let curves = (0..count)
         .map(|i| {
             let c = if side < 2 {
-                x.partial(i, 0).curve_at_u(t)?
+                x.partial(i, 0)?.curve_at_u(t)?
             } else {
-                x.partial(0, i).curve_at_v(t)?
+                x.partial(0, i)?.curve_at_v(t)?
             };
             Ok(SideCurve::Bezier(c))
         })

@@ -566,7 +566,7 @@ fn rhs_on_patch(
     let (hu, hv) = (su.width(), sv.width());
     let s = restrict_u(f, pu as f64 * hu, ((pu + 1) as f64 * hu).min(1.0))?;
     let s = restrict_v(&s, pv as f64 * hv, ((pv + 1) as f64 * hv).min(1.0))?;
-    let s = s.elevate_u(l - s.degree_u()).elevate_v(r - s.degree_v());
+    let s = s.elevate_u(l - s.degree_u())?.elevate_v(r - s.degree_v())?;
     Ok(OMatrix::<f64, Dyn, U3>::from_fn(count, |i, c| {
         s.points()[i][c]
     }))

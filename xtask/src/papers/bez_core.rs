@@ -38,7 +38,7 @@ pub(crate) fn figures(dir: &Path) -> Result<Vec<PathBuf>, DynError> {
         .equal()
         .with(Series::new(
             "curve",
-            xy(&curve.sample_uniform(200)),
+            xy(&curve.sample_uniform(200)?),
             Style::Line,
         ))
         .with(Series::new(

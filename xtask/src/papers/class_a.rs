@@ -330,9 +330,9 @@ fn ts(count: usize) -> impl Iterator<Item = f64> {
 }
 
 /// Curve (x–y projection for 3-D) with control polygon.
-fn curve_plot<const D: usize>(title: &str, c: &BezierCurve<D>) -> Plot {
-    let pts = c.sample_uniform(400);
-    Plot::new(title, "x", "y")
+fn curve_plot<const D: usize>(title: &str, c: &BezierCurve<D>) -> Result<Plot, DynError> {
+    let pts = c.sample_uniform(400)?;
+    Ok(Plot::new(title, "x", "y")
         .equal()
         .with(Series::new(
             "curve",
@@ -343,7 +343,7 @@ fn curve_plot<const D: usize>(title: &str, c: &BezierCurve<D>) -> Plot {
             "control polygon",
             c.points().iter().map(|p| (p[0], p[1])).collect(),
             Style::LinePoints,
-        ))
+        )))
 }
 
 fn write_set<const D: usize>(
@@ -356,7 +356,7 @@ fn write_set<const D: usize>(
 ) -> Result<(), DynError> {
     let proj = if D == 3 { " (x–y projection)" } else { "" };
     out.push(
-        curve_plot(&format!("{title}{proj}"), c)
+        curve_plot(&format!("{title}{proj}"), c)?
             .write_svg(&dir.join(format!("{stem}-curve.svg")))?,
     );
     let k: Vec<(f64, f64)> = ts(400)
@@ -416,7 +416,7 @@ pub(crate) fn figures(dir: &Path) -> Result<Vec<PathBuf>, DynError> {
     let t6 = cases::fig6_typical()?;
     let c6 = t6.curve()?;
     out.push(
-        curve_plot("Fig. 6: degree-49 planar typical curve", &c6)
+        curve_plot("Fig. 6: degree-49 planar typical curve", &c6)?
             .write_svg(&dir.join("fig6-curve.svg"))?,
     );
     let k6: Vec<(f64, f64)> = ts(400).map(|t| (t, t6.curvature(t))).collect();

@@ -24,11 +24,12 @@ fn xy(points: &[Vector2]) -> Xy {
     points.iter().map(|p| (p.x(), p.y())).collect()
 }
 
-fn polyline(curves: &[LambdaBezierCurve<2>], per_curve: usize) -> Xy {
-    curves
-        .iter()
-        .flat_map(|c| xy(&c.sample_uniform(per_curve)))
-        .collect()
+fn polyline(curves: &[LambdaBezierCurve<2>], per_curve: usize) -> Result<Xy, DynError> {
+    let mut out = Xy::new();
+    for c in curves {
+        out.extend(xy(&c.sample_uniform(per_curve)?));
+    }
+    Ok(out)
 }
 
 /// Writes the figures into `dir`.
@@ -70,7 +71,7 @@ pub(crate) fn figures(dir: &Path) -> Result<Vec<PathBuf>, DynError> {
             let c = LambdaBezierCurve::new(pts.clone(), l)?;
             p = p.with(Series::new(
                 format!("λ = {l}"),
-                xy(&c.sample_uniform(200)),
+                xy(&c.sample_uniform(200)?),
                 Style::Line,
             ));
         }
@@ -97,7 +98,7 @@ pub(crate) fn figures(dir: &Path) -> Result<Vec<PathBuf>, DynError> {
         ))
         .with(Series::new(
             "interpolant",
-            polyline(&curves, 100),
+            polyline(&curves, 100)?,
             Style::Line,
         ))
         .with(Series::new("data", xy(&data), Style::Points));
@@ -122,7 +123,7 @@ pub(crate) fn figures(dir: &Path) -> Result<Vec<PathBuf>, DynError> {
         p = p.with(Series::new(
             // Four decimals: the last digits of Brent's minimizer are rounding noise.
             format!("λ = {l:.4}"),
-            polyline(&halves, 200),
+            polyline(&halves, 200)?,
             Style::Line,
         ));
     }
@@ -158,7 +159,7 @@ pub(crate) fn figures(dir: &Path) -> Result<Vec<PathBuf>, DynError> {
         let c = LambdaBezierCurve::new(leaf_points(0.0), l)?;
         p = p.with(Series::new(
             format!("λ = {l}"),
-            xy(&c.sample_uniform(200)),
+            xy(&c.sample_uniform(200)?),
             Style::Line,
         ));
     }
@@ -169,7 +170,7 @@ pub(crate) fn figures(dir: &Path) -> Result<Vec<PathBuf>, DynError> {
         let c = LambdaBezierCurve::new(leaf_points(angle), l)?;
         p = p.with(Series::new(
             format!("λ = {l}"),
-            xy(&c.sample_uniform(200)),
+            xy(&c.sample_uniform(200)?),
             Style::Line,
         ));
     }
@@ -183,7 +184,7 @@ pub(crate) fn figures(dir: &Path) -> Result<Vec<PathBuf>, DynError> {
         )
         .equal();
         for lambdas in [vec![0.0], vec![1.0, -2.0, 1.0, -2.0, 1.0, -2.0]] {
-            let right = polyline(&vase_profile(n, &lambdas)?, 80);
+            let right = polyline(&vase_profile(n, &lambdas)?, 80)?;
             // One outline: left side top to bottom, the base, right side bottom to top.
             let mut outline: Xy = right.iter().rev().map(|&(x, y)| (-x, y)).collect();
             outline.extend_from_slice(&right);

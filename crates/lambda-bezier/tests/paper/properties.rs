@@ -185,7 +185,7 @@ proptest! {
         prop_assert_eq!(c.eval(0.0).unwrap(), p[0]);
         prop_assert_eq!(c.eval(1.0).unwrap(), p[n]);
         let k = n as f64 + c.lambda();
-        let d = c.derivative();
+        let d = c.derivative().unwrap();
         prop_assert!((d.start() - k * (p[1] - p[0])).norm() < 1e-11);
         prop_assert!((d.end() - k * (p[n] - p[n - 1])).norm() < 1e-11);
     }
@@ -227,7 +227,7 @@ proptest! {
         prop_assert!(continuity(&a, &g, 1e-9) >= Continuity::G1);
         let c = join_c1(&a, &b).unwrap();
         prop_assert_eq!(continuity(&a, &c, 1e-9), Continuity::C1);
-        let (da, dc) = (a.derivative().end(), c.derivative().start());
+        let (da, dc) = (a.derivative().unwrap().end(), c.derivative().unwrap().start());
         prop_assert!((da - dc).norm() <= 1e-9 * (1.0 + da.norm()));
     }
 }

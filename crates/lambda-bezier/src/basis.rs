@@ -51,11 +51,44 @@ pub fn corner_cut_ratio(n: usize, j: usize, lambda: f64) -> f64 {
 /// assert!((b.eval(1, t)? - paper).abs() < 1e-15);
 /// # Ok::<(), lambda_bezier::LambdaError>(())
 /// ```
+///
+/// Deserialization checks what [`LambdaBasis::new_unrestricted`] checks (n ≥ 2, n within
+/// [`LambdaRange`]'s limit, finite λ).
 #[derive(Debug, Clone, Copy, PartialEq)]
-#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
+#[cfg_attr(
+    feature = "serde",
+    derive(serde::Serialize, serde::Deserialize),
+    serde(try_from = "BasisRepr", into = "BasisRepr")
+)]
 pub struct LambdaBasis {
     n: usize,
     lambda: f64,
+}
+
+/// The serialized form of a [`LambdaBasis`].
+#[cfg(feature = "serde")]
+#[derive(serde::Serialize, serde::Deserialize)]
+struct BasisRepr {
+    n: usize,
+    lambda: f64,
+}
+
+#[cfg(feature = "serde")]
+impl TryFrom<BasisRepr> for LambdaBasis {
+    type Error = LambdaError;
+    fn try_from(r: BasisRepr) -> Result<Self, LambdaError> {
+        Self::new_unrestricted(r.n, r.lambda)
+    }
+}
+
+#[cfg(feature = "serde")]
+impl From<LambdaBasis> for BasisRepr {
+    fn from(b: LambdaBasis) -> Self {
+        Self {
+            n: b.n,
+            lambda: b.lambda,
+        }
+    }
 }
 
 impl LambdaBasis {

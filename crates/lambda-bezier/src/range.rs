@@ -26,13 +26,42 @@ const MAX_N: usize = 1 << 26;
 ///
 /// `min = −numerator / denominator` with `numerator = n(n−1)` and
 /// `denominator = M(n) = max_{1≤j≤n} j(n+1−2j)` (not reduced).
+///
+/// With the `serde` feature it is stored as its n alone and rebuilt (and checked) by
+/// [`LambdaRange::new`] when deserialized.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
-#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
+#[cfg_attr(
+    feature = "serde",
+    derive(serde::Serialize, serde::Deserialize),
+    serde(try_from = "RangeRepr", into = "RangeRepr")
+)]
 pub struct LambdaRange {
     n: usize,
     numerator: u64,
     denominator: u64,
     argmax: usize,
+}
+
+/// The serialized form of a [`LambdaRange`]: its n.
+#[cfg(feature = "serde")]
+#[derive(serde::Serialize, serde::Deserialize)]
+struct RangeRepr {
+    n: usize,
+}
+
+#[cfg(feature = "serde")]
+impl TryFrom<RangeRepr> for LambdaRange {
+    type Error = LambdaError;
+    fn try_from(r: RangeRepr) -> Result<Self, LambdaError> {
+        Self::new(r.n)
+    }
+}
+
+#[cfg(feature = "serde")]
+impl From<LambdaRange> for RangeRepr {
+    fn from(r: LambdaRange) -> Self {
+        Self { n: r.n }
+    }
 }
 
 impl LambdaRange {

@@ -36,3 +36,26 @@ fn surface_round_trip() {
     let back: LambdaBezierSurface<2> = serde_json::from_str(&json).unwrap();
     assert_eq!(back, s);
 }
+
+#[test]
+fn basis_and_range_deserialization_validates() {
+    use lambda_bezier::{LambdaBasis, LambdaRange};
+    let b = LambdaBasis::new(4, 0.5).unwrap();
+    let back: LambdaBasis = serde_json::from_str(&serde_json::to_string(&b).unwrap()).unwrap();
+    assert_eq!(back, b);
+    for bad in [
+        r#"{"n":1,"lambda":0.5}"#,
+        r#"{"n":18446744073709551615,"lambda":0.5}"#,
+        r#"{"n":4,"lambda":1e999}"#,
+    ] {
+        assert!(serde_json::from_str::<LambdaBasis>(bad).is_err(), "{bad}");
+    }
+    let r = LambdaRange::new(6).unwrap();
+    let json = serde_json::to_string(&r).unwrap();
+    assert_eq!(json, r#"{"n":6}"#);
+    let back: LambdaRange = serde_json::from_str(&json).unwrap();
+    assert_eq!((back.min(), back.max()), (r.min(), r.max()));
+    for bad in [r#"{"n":0}"#, r#"{"n":18446744073709551615}"#] {
+        assert!(serde_json::from_str::<LambdaRange>(bad).is_err(), "{bad}");
+    }
+}

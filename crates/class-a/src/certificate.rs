@@ -126,12 +126,7 @@ pub fn curvature_numerator<const D: usize>(
     curve: &BezierCurve<D>,
 ) -> Result<(ScaledBernstein, ScaledBernstein), ClassAError> {
     let n = curve.degree();
-    if n < 2 {
-        return Err(ClassAError::DegreeTooLow {
-            degree: n,
-            needed: 2,
-        });
-    }
+    crate::error::check_degree(n, 2)?;
     let d = hodographs(curve, 2)?;
     let p = dot(&d[0], &d[0]);
     let g = gram(&d[0], &d[1]);
@@ -151,12 +146,7 @@ pub fn torsion_numerator(
     curve: &BezierCurve<3>,
 ) -> Result<(ScaledBernstein, ScaledBernstein), ClassAError> {
     let n = curve.degree();
-    if n < 3 {
-        return Err(ClassAError::DegreeTooLow {
-            degree: n,
-            needed: 3,
-        });
-    }
+    crate::error::check_degree(n, 3)?;
     let d = hodographs(curve, 3)?;
     let (d1, d2, d3) = (&d[0], &d[1], &d[2]);
     let cross: Vec<ScaledBernstein> = (0..3)

@@ -18,9 +18,7 @@ pub fn class_a_curve<const D: usize>(
     m: &SMatrix<f64, D, D>,
     degree: usize,
 ) -> Result<BezierCurve<D>, ClassAError> {
-    if degree == 0 {
-        return Err(ClassAError::DegreeTooLow { degree, needed: 1 });
-    }
+    crate::error::check_degree(degree, 1)?;
     if !b0.iter().all(|x| x.is_finite()) {
         return Err(ClassAError::NonFinite { name: "b0" });
     }

@@ -32,6 +32,14 @@ pub enum ClassAError {
         /// The smallest degree accepted.
         needed: usize,
     },
+    /// The degree is above [`MAX_DEGREE`](crate::MAX_DEGREE).
+    #[error("degree {degree} is above the limit {max}")]
+    DegreeTooHigh {
+        /// The degree given.
+        degree: usize,
+        /// The largest degree accepted.
+        max: usize,
+    },
     /// The curve is singular at an exact parameter: x' = 0 (curvature undefined) or
     /// x' × x'' = 0 (torsion undefined).
     #[error("{quantity} vanishes at t = {parameter}: the quantity is undefined there")]
@@ -152,4 +160,68 @@ pub enum ClassAError {
         /// The usable samples.
         count: usize,
     },
+}
+
+/// The largest degree of a Class A curve: 1,024 (the paper's examples go to 49). Curve
+/// construction is O(n); the exact certificates grow about as n^2.7 and take minutes near the
+/// limit, so interactive use should stay well below it.
+pub const MAX_DEGREE: usize = 1024;
+
+/// [`ClassAError::DegreeTooLow`] below `needed`, [`ClassAError::DegreeTooHigh`] above
+/// [`MAX_DEGREE`]: checked before any work.
+pub(crate) fn check_degree(degree: usize, needed: usize) -> Result<(), ClassAError> {
+    if degree < needed {
+        return Err(ClassAError::DegreeTooLow { degree, needed });
+    }
+    if degree > MAX_DEGREE {
+        return Err(ClassAError::DegreeTooHigh {
+            degree,
+            max: MAX_DEGREE,
+        });
+    }
+    Ok(())
+}
+
+#[cfg(test)]
+mod tests {
+    #![allow(clippy::unwrap_used, reason = "tests fail loudly")]
+    use super::*;
+    use crate::{TypicalPlanar, TypicalSpatial, class_a_curve, planar_feasibility};
+    use bez_core::{Vector2, Vector3};
+
+    #[test]
+    fn degrees_above_the_limit_are_refused_before_any_work() {
+        let (a0, a1, a2) = (
+            Vector2::new(0.0, 0.0),
+            Vector2::new(1.0, 0.0),
+            Vector2::new(2.0, 1.0),
+        );
+        for degree in [MAX_DEGREE + 1, 1_000_000_000, usize::MAX] {
+            let too_high = ClassAError::DegreeTooHigh {
+                degree,
+                max: MAX_DEGREE,
+            };
+            assert_eq!(
+                planar_feasibility(&a0, &a1, &a2, degree).unwrap_err(),
+                too_high
+            );
+            assert_eq!(
+                TypicalPlanar::from_points(&a0, &a1, &a2, degree).unwrap_err(),
+                too_high
+            );
+            let a = [
+                Vector3::new(0.0, 0.0, 0.0),
+                Vector3::new(1.0, 0.0, 0.0),
+                Vector3::new(2.0, 1.0, 0.5),
+                Vector3::new(3.0, 1.0, 1.0),
+            ];
+            assert_eq!(
+                TypicalSpatial::from_points(&a, degree).unwrap_err(),
+                too_high
+            );
+            let m = nalgebra::Matrix2::identity();
+            assert_eq!(class_a_curve(&a0, &a1, &m, degree).unwrap_err(), too_high);
+        }
+        assert!(planar_feasibility(&a0, &a1, &a2, MAX_DEGREE).is_ok());
+    }
 }

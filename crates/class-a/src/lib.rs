@@ -49,7 +49,7 @@ pub use crate::certificate::{
     torsion_certificate, torsion_numerator,
 };
 pub use crate::curve::{ClassACurve, class_a_curve};
-pub use crate::error::ClassAError;
+pub use crate::error::{ClassAError, MAX_DEGREE};
 pub use crate::exact::ScaledBernstein;
 pub use crate::general::{perturb2, perturb3};
 pub use crate::interpolation::{INTERPOLATION_TOLERANCE, Interpolation};

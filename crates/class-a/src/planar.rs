@@ -224,9 +224,7 @@ pub fn planar_feasibility(
     a2: &Vector2,
     degree: usize,
 ) -> Result<PlanarFeasibility, ClassAError> {
-    if degree < 2 {
-        return Err(ClassAError::DegreeTooLow { degree, needed: 2 });
-    }
+    crate::error::check_degree(degree, 2)?;
     let g = PlanarGeometry::new(a0, a1, a2)?;
     let theta = g.turn / (degree - 1) as f64;
     let s = solve_scale(theta, g.chord_angle, degree);
@@ -291,9 +289,7 @@ impl TypicalPlanar {
                 });
             }
         }
-        if degree < 2 {
-            return Err(ClassAError::DegreeTooLow { degree, needed: 2 });
-        }
+        crate::error::check_degree(degree, 2)?;
         Ok(Self {
             b0,
             mu,
@@ -518,9 +514,7 @@ pub fn planar_nelder_mead(
 ) -> Result<(TypicalPlanar, f64), ClassAError> {
     use argmin::core::{CostFunction, Executor, State};
     use argmin::solver::neldermead::NelderMead;
-    if degree < 2 {
-        return Err(ClassAError::DegreeTooLow { degree, needed: 2 });
-    }
+    crate::error::check_degree(degree, 2)?;
     let g = PlanarGeometry::new(a0, a1, a2)?;
     let theta = g.turn / (degree - 1) as f64;
     let target = Complex::from_polar(g.chord_length, g.chord_angle);

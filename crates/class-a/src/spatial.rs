@@ -61,9 +61,7 @@ struct Setup {
 
 impl Setup {
     fn new(a: &[Vector3; 4], degree: usize) -> Result<Self, ClassAError> {
-        if degree < 2 {
-            return Err(ClassAError::DegreeTooLow { degree, needed: 2 });
-        }
+        crate::error::check_degree(degree, 2)?;
         if !a.iter().all(|p| p.iter().all(|x| x.is_finite())) {
             return Err(ClassAError::NonFinite { name: "alpha" });
         }

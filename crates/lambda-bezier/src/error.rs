@@ -75,4 +75,19 @@ pub enum LambdaError {
         /// The number of λ values given.
         got: usize,
     },
+    /// A joint needs more control points in the second curve than it has: a G2 joint sets
+    /// Q₀, Q₁ and Q₂ and must leave the end point Qₙ alone (n ≥ 3).
+    #[error("a G2 joint sets the first three control points and needs n ≥ {needed}, got n = {n}")]
+    JoinNeedsDegree {
+        /// The smallest n accepted.
+        needed: usize,
+        /// The n of the second curve.
+        n: usize,
+    },
+    /// Two surface patches cannot share the boundary: their grids or λ across it differ.
+    #[error("the patches cannot share a boundary: {what} differ")]
+    PatchMismatch {
+        /// What differs (the v sizes of the grids, or λ_v).
+        what: &'static str,
+    },
 }

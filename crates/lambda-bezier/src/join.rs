@@ -1,11 +1,12 @@
-//! Joining consecutive λ-Bézier curves with G1 or C1 continuity.
+//! Joining consecutive λ-Bézier curves with G1, C1 or G2 continuity.
 //!
 //! At the joint of A (n_a, λ_a, P) and B (n_b, λ_b, Q) with Q₀ = P_{n_a}, the one-sided
 //! derivatives are (n_a + λ_a)(P_{n_a} − P_{n_a−1}) and (n_b + λ_b)(Q₁ − Q₀) (Property 1), so
 //! - G1 ⇔ Q₁ − Q₀ = s (P_{n_a} − P_{n_a−1}) for some s > 0,
 //! - C1 ⇔ s = (n_a + λ_a) / (n_b + λ_b).
 //!
-//! The λ values and degrees of the two curves are free: a joint fixes only Q₀ and Q₁.
+//! The λ values and degrees of the two curves are free: a G1 or C1 joint fixes only Q₀ and Q₁,
+//! a G2 joint also Q₂ (see [`join_g2`]).
 //! n + λ = 0 (possible at the lower end of the range for n ≤ 5) makes the tangent vanish.
 
 use bez_core::{BezierForm, Vector};
@@ -97,6 +98,47 @@ pub fn join_c1<const D: usize>(
     LambdaBezierCurve::new(q, b.lambda())
 }
 
+/// B moved to join A with G2 continuity (common tangent direction and curvature vector):
+/// Q₀ and Q₁ as in [`join_g1`], and Q₂ solved from the second derivative.
+///
+/// With the Bézier form Rⱼ = (1 − aⱼ) Qⱼ₋₁ + aⱼ Qⱼ of B (degree N = n_b + 1, aⱼ the
+/// [`corner_cut_ratio`](crate::corner_cut_ratio)s), B'(0) = N (R₁ − R₀) = s A'(1) with
+/// s = (n_b + λ_b)|Q₁ − Q₀| / |A'(1)| > 0, and G2 asks B''(0) = s² A''(1) + μ A'(1) for some μ
+/// (the curvature depends only on the part of B'' normal to B'). This takes μ = 0, so
+/// R₂ = s² A''(1) / (N (N − 1)) + 2 R₁ − R₀ and
+/// Q₂ = (R₂ − (1 − a₂) Q₁) / a₂. The other points and λ of B stay.
+///
+/// # Errors
+/// [`LambdaError::JoinNeedsDegree`] for n_b < 3 (Q₂ would be B's end point);
+/// [`LambdaError::DegenerateJoint`] if A's end tangent or B's first leg vanishes, or a₂ = 0
+/// (λ_b at the lower end of its range for some n); a result outside the coordinate range.
+pub fn join_g2<const D: usize>(
+    a: &LambdaBezierCurve<D>,
+    b: &LambdaBezierCurve<D>,
+) -> Result<LambdaBezierCurve<D>, LambdaError> {
+    let n = b.n();
+    if n < 3 {
+        return Err(LambdaError::JoinNeedsDegree { needed: 3, n });
+    }
+    let g1 = join_g1(a, b)?;
+    let d = a.as_bezier().eval_derivatives(1.0, 2)?;
+    let (lambda, big_n) = (b.lambda(), (n + 1) as f64);
+    let (a1, a2) = (
+        crate::corner_cut_ratio(n, 1, lambda),
+        crate::corner_cut_ratio(n, 2, lambda),
+    );
+    if a2.abs() <= f64::EPSILON {
+        return Err(LambdaError::DegenerateJoint { which: "outgoing" });
+    }
+    let mut q = g1.points().to_vec();
+    let s = (n as f64 + lambda) * (q[1] - q[0]).norm() / d[1].norm();
+    let r0 = q[0];
+    let r1 = q[0] * (1.0 - a1) + q[1] * a1;
+    let r2 = d[2] * (s * s / (big_n * (big_n - 1.0))) + r1 * 2.0 - r0;
+    q[2] = (r2 - q[1] * (1.0 - a2)) / a2;
+    LambdaBezierCurve::new(q, lambda)
+}
+
 /// The λ-curve with prescribed end points and end derivatives (a λ-Hermite segment):
 /// P₀ = `start`, P₁ = P₀ + `start_derivative`/(n + λ), `inner` points, Pₙ₋₁ = Pₙ − `end_derivative`/(n + λ),
 /// Pₙ = `end`, with n = `inner.len()` + 3. Consecutive segments built from shared points and
@@ -139,9 +181,94 @@ fn unit_end_tangent<const D: usize>(a: &LambdaBezierCurve<D>) -> Result<Vector<D
 
 #[cfg(test)]
 mod tests {
-    use bez_core::Vector2;
+    use bez_core::{Vector2, Vector3};
 
     use super::*;
+
+    /// G2 checked by bez-core's curvature formulas, independent of the construction: common
+    /// point, common unit tangent, equal signed curvature (2-D), equal curvature and osculating
+    /// plane (3-D), for several degrees and λ on both sides.
+    #[test]
+    fn g2_join_matches_position_tangent_and_curvature() {
+        let mut checked = 0;
+        for (na, nb) in [(2, 3), (3, 4), (5, 3), (4, 7)] {
+            for (la, lb) in [(0.0, 0.0), (0.5, -0.5), (-0.9, 0.9), (0.3, 0.6)] {
+                let pa: Vec<Vector2> = (0..=na)
+                    .map(|i| Vector2::new(i as f64, ((i * 3) % 4) as f64 * 0.7))
+                    .collect();
+                let pb: Vec<Vector2> = (0..=nb)
+                    .map(|i| Vector2::new(10.0 + i as f64, ((i * 5) % 3) as f64 - 1.0))
+                    .collect();
+                let (Ok(a), Ok(b)) = (
+                    LambdaBezierCurve::new(pa, la),
+                    LambdaBezierCurve::new(pb, lb),
+                ) else {
+                    continue;
+                };
+                let j = join_g2(&a, &b).unwrap();
+                let (ab, jb) = (a.as_bezier(), j.as_bezier());
+                assert!((ab.end() - jb.start()).norm() < 1e-12);
+                let (ta, tj) = (a.end_tangent(), j.start_tangent());
+                assert!((ta / ta.norm() - tj / tj.norm()).norm() < 1e-12);
+                let (ka, kj) = (
+                    ab.signed_curvature(1.0).unwrap(),
+                    jb.signed_curvature(0.0).unwrap(),
+                );
+                assert!(
+                    (ka - kj).abs() <= 1e-9 * (1.0 + ka.abs()),
+                    "n {na}/{nb} λ {la}/{lb}: {ka} vs {kj}"
+                );
+                // Only Q₀, Q₁, Q₂ move.
+                assert_eq!(j.points()[3..], b.points()[3..]);
+                checked += 1;
+            }
+        }
+        assert!(checked >= 12, "only {checked} combinations were in range");
+        let lift = |p: &[Vector2], z: f64| -> Vec<Vector3> {
+            p.iter()
+                .enumerate()
+                .map(|(i, q)| Vector3::new(q.x(), q.y(), z * (i * i) as f64))
+                .collect()
+        };
+        let a = LambdaBezierCurve::new(lift(a().points(), 0.3), 0.4).unwrap();
+        let b = LambdaBezierCurve::new(
+            lift(
+                &[
+                    Vector2::new(5.0, 0.0),
+                    Vector2::new(6.0, 2.0),
+                    Vector2::new(7.0, 0.0),
+                    Vector2::new(8.0, 1.0),
+                ],
+                -0.2,
+            ),
+            -0.7,
+        )
+        .unwrap();
+        let j = join_g2(&a, &b).unwrap();
+        let (da, dj) = (
+            a.as_bezier().eval_derivatives(1.0, 2).unwrap(),
+            j.as_bezier().eval_derivatives(0.0, 2).unwrap(),
+        );
+        let (ca, cj) = (da[1].cross(&da[2]), dj[1].cross(&dj[2]));
+        assert!(
+            (ca / ca.norm() - cj / cj.norm()).norm() < 1e-12,
+            "osculating planes differ"
+        );
+        let (ka, kj) = (
+            a.as_bezier().curvature(1.0).unwrap(),
+            j.as_bezier().curvature(0.0).unwrap(),
+        );
+        assert!((ka - kj).abs() <= 1e-9 * ka, "{ka} vs {kj}");
+    }
+
+    #[test]
+    fn g2_join_needs_four_control_points() {
+        let short = LambdaBezierCurve::new(a().points()[..3].to_vec(), 0.0).unwrap();
+        assert_eq!(
+            join_g2(&b(), &short),
+            Err(LambdaError::JoinNeedsDegree { needed: 3, n: 2 })
+        );
+    }
 
     fn a() -> LambdaBezierCurve<2> {
         LambdaBezierCurve::new(

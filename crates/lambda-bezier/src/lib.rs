@@ -44,7 +44,7 @@ pub use crate::basis::{LambdaBasis, corner_cut_ratio};
 pub use crate::curve::LambdaBezierCurve;
 pub use crate::error::LambdaError;
 pub use crate::interpolate::{shape_preserving_curves, shape_preserving_polygons};
-pub use crate::join::{Continuity, continuity, hermite_segment, join_c1, join_g1};
+pub use crate::join::{Continuity, continuity, hermite_segment, join_c1, join_g1, join_g2};
 pub use crate::range::{LambdaRange, lambda_range};
 pub use crate::surface::LambdaBezierSurface;
 

@@ -39,6 +39,7 @@ mod interpolate;
 mod join;
 mod range;
 mod surface;
+mod surface_join;
 
 pub use crate::basis::{LambdaBasis, corner_cut_ratio};
 pub use crate::curve::LambdaBezierCurve;
@@ -47,6 +48,7 @@ pub use crate::interpolate::{shape_preserving_curves, shape_preserving_polygons}
 pub use crate::join::{Continuity, continuity, hermite_segment, join_c1, join_g1, join_g2};
 pub use crate::range::{LambdaRange, lambda_range};
 pub use crate::surface::LambdaBezierSurface;
+pub use crate::surface_join::{PatchJoin, join_patches};
 
 /// The README's example, compiled and run with the doctests.
 #[cfg(doctest)]

@@ -90,4 +90,7 @@ pub enum LambdaError {
         /// What differs (the v sizes of the grids, or λ_v).
         what: &'static str,
     },
+    /// No λ in the valid interval gives a finite cost (or the minimizer failed).
+    #[error("no λ in the valid interval gives a finite cost")]
+    NoMinimum,
 }

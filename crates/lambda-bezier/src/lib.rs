@@ -35,6 +35,8 @@ mod basis;
 pub mod cases;
 mod curve;
 mod error;
+#[cfg(feature = "fit")]
+mod fit;
 mod interpolate;
 mod join;
 mod range;
@@ -44,6 +46,8 @@ mod surface_join;
 pub use crate::basis::{LambdaBasis, corner_cut_ratio};
 pub use crate::curve::LambdaBezierCurve;
 pub use crate::error::LambdaError;
+#[cfg(feature = "fit")]
+pub use crate::fit::{LambdaFit, LambdaTarget, fit_lambda, minimize_over_range};
 pub use crate::interpolate::{shape_preserving_curves, shape_preserving_polygons};
 pub use crate::join::{Continuity, continuity, hermite_segment, join_c1, join_g1, join_g2};
 pub use crate::range::{LambdaRange, lambda_range};

@@ -260,8 +260,12 @@ fn minimize(f: impl Fn(f64) -> Result<f64, DynError>, a: f64, b: f64) -> Result<
         .ok_or_else(|| "Brent returned no parameter".into())
 }
 
+/// λ of the quartic half circles with the least radial error, by the library's optimizer.
 fn best_circle_lambda() -> Result<f64, DynError> {
-    minimize(|l| Ok(circle_error(l)?), -3.0, 1.0)
+    let range = lambda_bezier::LambdaRange::new(3)?;
+    Ok(lambda_bezier::minimize_over_range(&range, |l| {
+        circle_error(l).unwrap_or(f64::INFINITY)
+    })?)
 }
 
 fn err(c: &BezierCurve<2>) -> f64 {

@@ -262,7 +262,7 @@ fn minimize(f: impl Fn(f64) -> Result<f64, DynError>, a: f64, b: f64) -> Result<
 
 /// λ of the quartic half circles with the least radial error, by the library's optimizer.
 fn best_circle_lambda() -> Result<f64, DynError> {
-    let range = lambda_bezier::LambdaRange::new(3)?;
+    let range = LambdaRange::new(3)?;
     Ok(lambda_bezier::minimize_over_range(&range, |l| {
         circle_error(l).unwrap_or(f64::INFINITY)
     })?)

@@ -22,13 +22,27 @@ use crate::range::LambdaRange;
 /// Returns NaN for n < 2 or j > n + 1 (callers validate first).
 #[must_use]
 pub fn corner_cut_ratio(n: usize, j: usize, lambda: f64) -> f64 {
-    if n < 2 || j > n + 1 {
+    if n < 2 || j > n.saturating_add(1) {
         return f64::NAN;
     }
     let (nf, jf) = (n as f64, j as f64);
     // j(n+1−2j) is an exact integer in f64 for any realistic n; compute it signed.
     let shape = jf * (nf + 1.0 - 2.0 * jf) / (nf * (nf - 1.0));
     (nf + 1.0 - jf) / (nf + 1.0) * (1.0 + lambda * shape)
+}
+
+/// `CoreError::DegreeTooHigh` unless the basis degree n + 1 is within bez-core's limit (the
+/// basis functions are Bézier polynomials of that degree; all work is then bounded).
+fn check_basis_degree(n: usize) -> Result<(), LambdaError> {
+    let degree = n.saturating_add(1);
+    if degree > bez_core::MAX_DEGREE {
+        return Err(CoreError::DegreeTooHigh {
+            max: bez_core::MAX_DEGREE,
+            degree,
+        }
+        .into());
+    }
+    Ok(())
 }
 
 /// The λ-B basis {b_{0,n+1}, …, b_{n,n+1}} for n ≥ 2 and a validated λ.
@@ -96,8 +110,10 @@ impl LambdaBasis {
     ///
     /// # Errors
     /// [`LambdaError::DegreeTooLow`], [`LambdaError::NonFiniteLambda`],
-    /// [`LambdaError::LambdaOutOfRange`].
+    /// [`LambdaError::LambdaOutOfRange`]; `CoreError::DegreeTooHigh` when the degree n + 1
+    /// exceeds bez-core's [`MAX_DEGREE`](bez_core::MAX_DEGREE).
     pub fn new(n: usize, lambda: f64) -> Result<Self, LambdaError> {
+        check_basis_degree(n)?;
         let lambda = LambdaRange::new(n)?.check(lambda)?;
         Ok(Self { n, lambda })
     }
@@ -106,8 +122,10 @@ impl LambdaBasis {
     /// (the functions then take negative values). Still needs n ≥ 2 and a finite λ.
     ///
     /// # Errors
-    /// [`LambdaError::DegreeTooLow`], [`LambdaError::NonFiniteLambda`].
+    /// [`LambdaError::DegreeTooLow`], [`LambdaError::NonFiniteLambda`], `CoreError::DegreeTooHigh`
+    /// as in [`Self::new`].
     pub fn new_unrestricted(n: usize, lambda: f64) -> Result<Self, LambdaError> {
+        check_basis_degree(n)?;
         LambdaRange::new(n)?;
         if !lambda.is_finite() {
             return Err(LambdaError::NonFiniteLambda { lambda });
@@ -165,14 +183,24 @@ impl LambdaBasis {
     /// The `order`-th derivative of b_{k,n+1} at t (order 0 is the value).
     ///
     /// # Errors
-    /// [`LambdaError::IndexOutOfRange`], t outside [0, 1].
+    /// [`LambdaError::IndexOutOfRange`], t outside [0, 1]; `CoreError::Overflow` when the value
+    /// is not representable (high orders at high degree).
     pub fn derivative(&self, k: usize, t: f64, order: usize) -> Result<f64, LambdaError> {
         self.check_index(k)?;
         check_t(t)?;
         let m = self.n + 1;
         let a = corner_cut_ratio(self.n, k, self.lambda);
         let b = 1.0 - corner_cut_ratio(self.n, k + 1, self.lambda);
-        Ok(a * bernstein_derivative(m, k, t, order) + b * bernstein_derivative(m, k + 1, t, order))
+        let value =
+            a * bernstein_derivative(m, k, t, order) + b * bernstein_derivative(m, k + 1, t, order);
+        if value.is_finite() {
+            Ok(value)
+        } else {
+            Err(CoreError::Overflow {
+                operation: "basis derivative",
+            }
+            .into())
+        }
     }
 
     /// All n + 1 values b_{0,n+1}(t), …, b_{n,n+1}(t) into `out` (length n + 1), in O(n)

@@ -64,8 +64,8 @@ proptest! {
             if let Ok(c) = b.bernstein_coefficients(k) { prop_assert!(c.iter().all(|x| x.is_finite())); }
             let mut row = vec![0.0; b.n() + 1];
             if b.row(t, &mut row).is_ok() { prop_assert!(row.iter().all(|x| x.is_finite())); }
-            if b.n() < 200 {
-                if let Ok(r) = b.eval_by_recurrence(t) { prop_assert!(r.iter().all(|x| x.is_finite())); }
+            if b.n() < 200 && let Ok(r) = b.eval_by_recurrence(t) {
+                prop_assert!(r.iter().all(|x| x.is_finite()));
             }
         }
     }
@@ -86,14 +86,15 @@ proptest! {
         }
         if let (Ok(a), Ok(b)) = (&a, &b) {
             let _ = continuity(a, b, 1e-9);
-            for j in [join_g1(a, b), join_c1(a, b), join_g2(a, b)] {
-                if let Ok(j) = j { prop_assert!(j.points().iter().all(finite)); }
+            for j in [join_g1(a, b), join_c1(a, b), join_g2(a, b)].into_iter().flatten() {
+                prop_assert!(j.points().iter().all(finite));
             }
         }
-        if p.len() >= 2 && q.len() >= 2 {
-            if let Ok(h) = hermite_segment(p[0], p[1], &q, q[0], q[1], la) {
-                prop_assert!(h.points().iter().all(finite));
-            }
+        if p.len() >= 2
+            && q.len() >= 2
+            && let Ok(h) = hermite_segment(p[0], p[1], &q, q[0], q[1], la)
+        {
+            prop_assert!(h.points().iter().all(finite));
         }
         if let Ok(polys) = shape_preserving_polygons(&p) {
             prop_assert!(polys.iter().flatten().all(finite));

@@ -1,7 +1,7 @@
 //! Seeded data sets and the figure cases shared by tests, benchmarks and the xtask.
 
+use crate::square::{Matrix2, Matrix3};
 use bez_core::{BezierCurve, Vector2, Vector3};
-use nalgebra::{Matrix2, Matrix3};
 use rand::{RngExt, SeedableRng};
 use rand_chacha::ChaCha8Rng;
 
@@ -48,7 +48,7 @@ pub fn random_planar_inputs(count: usize, seed: u64) -> Vec<([Vector2; 3], usize
         let mut p = b0;
         for _ in 0..n - 1 {
             p += leg;
-            leg = (m * nalgebra::Vector2::<f64>::from(leg)).into();
+            leg = m * leg;
         }
         let d_last = leg;
         let bn = p + leg;
@@ -86,14 +86,14 @@ pub fn random_spatial_inputs(count: usize, seed: u64) -> Vec<([Vector3; 4], usiz
         if axis.cross(&v0).norm() < 0.2 {
             continue;
         }
-        let m: Matrix3<f64> = rotation(&axis, theta) * s;
+        let m: Matrix3 = rotation(&axis, theta) * s;
         let mut p = Vector3::zeros();
         let mut leg = v0;
         let mut pts = vec![p];
         for _ in 0..n {
             p += leg;
             pts.push(p);
-            leg = (m * nalgebra::Vector3::<f64>::from(leg)).into();
+            leg = m * leg;
         }
         out.push(([pts[0], pts[1], pts[n - 1], pts[n]], n));
     }
@@ -116,8 +116,8 @@ fn random_unit(rng: &mut ChaCha8Rng) -> Vector3 {
 
 /// Fig. 5: Farin's example matrix as printed in the paper.
 #[must_use]
-pub fn fig5_matrix() -> Matrix3<f64> {
-    Matrix3::new(2.58, -0.04, 0.89, 0.45, 2.13, 0.45, 0.0, 0.0, 2.21)
+pub fn fig5_matrix() -> Matrix3 {
+    Matrix3::from_rows([[2.58, -0.04, 0.89], [0.45, 2.13, 0.45], [0.0, 0.0, 2.21]])
 }
 
 /// Fig. 5 start vector: the printed V = [−1, 1] is 2-D; we use (−1, 1, 1), which has a
@@ -256,7 +256,7 @@ pub struct CounterexampleSearch {
     /// Of those, how many also meet condition (4) for the sub-curve matrices (sampled).
     pub not_monotone_with_subcurve_4: usize,
     /// The first counterexample found: (M, Δb₀, degree, parameter of the extremum).
-    pub first: Option<(Matrix2<f64>, Vector2, usize, f64)>,
+    pub first: Option<(Matrix2, Vector2, usize, f64)>,
 }
 
 /// Random search for Cao & Wang's phenomenon: 2×2 matrices with entries a₁₁, a₂₂ ∈ [0.5, 3),

@@ -1,8 +1,8 @@
 //! Control points of a Class A curve from its first leg and its matrix (eqs. (2), (8)), and
 //! the curve value [`ClassACurve`].
 
+use crate::square::Matrix;
 use bez_core::{BezierCurve, BezierForm, Vector};
-use nalgebra::SMatrix;
 
 use crate::{ClassAError, TypicalPlanar, TypicalSpatial};
 
@@ -15,7 +15,7 @@ use crate::{ClassAError, TypicalPlanar, TypicalSpatial};
 pub fn class_a_curve<const D: usize>(
     b0: &Vector<D>,
     delta_b0: &Vector<D>,
-    m: &SMatrix<f64, D, D>,
+    m: &Matrix<D>,
     degree: usize,
 ) -> Result<BezierCurve<D>, ClassAError> {
     crate::error::check_degree(degree, 1)?;
@@ -35,7 +35,7 @@ pub fn class_a_curve<const D: usize>(
     for _ in 0..degree {
         p += leg;
         points.push(p);
-        leg = (m * nalgebra::SVector::<f64, D>::from(leg)).into();
+        leg = *m * leg;
     }
     Ok(BezierCurve::new(points)?)
 }
@@ -69,7 +69,7 @@ pub fn class_a_curve<const D: usize>(
 /// ```
 #[derive(Debug, Clone, PartialEq)]
 pub struct ClassACurve<const D: usize> {
-    matrix: SMatrix<f64, D, D>,
+    matrix: Matrix<D>,
     bezier: BezierCurve<D>,
 }
 
@@ -81,7 +81,7 @@ impl<const D: usize> ClassACurve<D> {
     pub fn new(
         b0: &Vector<D>,
         delta_b0: &Vector<D>,
-        m: &SMatrix<f64, D, D>,
+        m: &Matrix<D>,
         degree: usize,
     ) -> Result<Self, ClassAError> {
         Ok(Self {
@@ -92,7 +92,7 @@ impl<const D: usize> ClassACurve<D> {
 
     /// The matrix M of the legs.
     #[must_use]
-    pub fn matrix(&self) -> SMatrix<f64, D, D> {
+    pub fn matrix(&self) -> Matrix<D> {
         self.matrix
     }
 
@@ -137,8 +137,8 @@ impl TryFrom<&TypicalSpatial> for ClassACurve<3> {
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::Matrix2;
     use bez_core::Vector2;
-    use nalgebra::Matrix2;
 
     #[test]
     fn legs_follow_matrix_powers() {

@@ -219,7 +219,7 @@ mod tests {
                 TypicalSpatial::from_points(&a, degree).unwrap_err(),
                 too_high
             );
-            let m = nalgebra::Matrix2::identity();
+            let m = crate::Matrix2::identity();
             assert_eq!(class_a_curve(&a0, &a1, &m, degree).unwrap_err(), too_high);
         }
         assert!(planar_feasibility(&a0, &a1, &a2, MAX_DEGREE).is_ok());

@@ -1,8 +1,8 @@
 //! Curvature and torsion with their arc-length derivatives, and the logarithmic curvature and
 //! torsion graphs (LCG, LTG; eqs. (20)–(24)).
 
+use crate::square::Matrix3;
 use bez_core::BezierCurve;
-use nalgebra::Matrix3;
 
 use crate::ClassAError;
 
@@ -53,9 +53,8 @@ pub fn torsion_with_derivative(curve: &BezierCurve<3>, t: f64) -> Result<(f64, f
     if g == 0.0 {
         return Err(bez_core::CoreError::ZeroCurvature { t }.into());
     }
-    let [n1, n2, n3, n4] = [d1, d2, d3, d4].map(nalgebra::Vector3::<f64>::from);
-    let det = Matrix3::from_columns(&[n1, n2, n3]).determinant();
-    let det4 = Matrix3::from_columns(&[n1, n2, n4]).determinant();
+    let det = Matrix3::from_columns(&[d1, d2, d3]).determinant();
+    let det4 = Matrix3::from_columns(&[d1, d2, d4]).determinant();
     let gp = 2.0 * c.dot(&d1.cross(&d3));
     let tau = det / g;
     let tt = det4 / g - det * gp / (g * g);

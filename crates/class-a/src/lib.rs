@@ -40,6 +40,7 @@ mod planar;
 mod sign;
 mod spatial;
 mod spiral;
+mod square;
 
 #[cfg(feature = "paper")]
 pub mod cases;
@@ -66,6 +67,7 @@ pub use crate::planar::{
 pub use crate::sign::{MAX_PIECES, MAX_SUBDIVISION_DEPTH};
 pub use crate::spatial::{TypicalSpatial, rotation};
 pub use crate::spiral::{apollonius_pole, log_spiral_pole, spiral_deviation};
+pub use crate::square::{Matrix, Matrix2, Matrix3};
 #[cfg(feature = "paper")]
 pub use crate::{planar::planar_nelder_mead, spiral::printed_pole_eq19};
 

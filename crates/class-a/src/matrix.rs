@@ -1,6 +1,6 @@
 //! Class A matrices (Farin 2006; the paper's eqs. (3)–(5)): each condition reported separately.
 
-use nalgebra::{Matrix2, Matrix3};
+use crate::square::{Matrix, Matrix2, Matrix3};
 
 use crate::ClassAError;
 
@@ -63,39 +63,29 @@ impl ClassAReport {
     ///
     /// # Errors
     /// [`ClassAError::NonFinite`] if an entry is NaN or infinite.
-    pub fn of_2x2(m: &Matrix2<f64>) -> Result<Self, ClassAError> {
-        check_finite(m.iter())?;
-        let sym_min = |a: &Matrix2<f64>| {
-            (a + a.transpose() - Matrix2::<f64>::identity() * 2.0)
-                .symmetric_eigenvalues()
-                .min()
-        };
-        let sv = |a: &Matrix2<f64>| {
-            let s = a.singular_values();
-            (s.min(), s.max())
-        };
-        Ok(report(m, sym_min, sv, |t| {
-            Matrix2::identity() * (1.0 - t) + m * t
-        }))
+    pub fn of_2x2(m: &Matrix2) -> Result<Self, ClassAError> {
+        Self::of_matrix(m)
     }
 
     /// The report of a 3×3 matrix.
     ///
     /// # Errors
     /// [`ClassAError::NonFinite`] if an entry is NaN or infinite.
-    pub fn of_3x3(m: &Matrix3<f64>) -> Result<Self, ClassAError> {
+    pub fn of_3x3(m: &Matrix3) -> Result<Self, ClassAError> {
+        Self::of_matrix(m)
+    }
+
+    /// The report of a D × D matrix.
+    ///
+    /// # Errors
+    /// [`ClassAError::NonFinite`] if an entry is NaN or infinite.
+    pub fn of_matrix<const D: usize>(m: &Matrix<D>) -> Result<Self, ClassAError> {
         check_finite(m.iter())?;
-        let sym_min = |a: &Matrix3<f64>| {
-            (a + a.transpose() - Matrix3::<f64>::identity() * 2.0)
-                .symmetric_eigenvalues()
-                .min()
+        let sym_min = |a: &Matrix<D>| {
+            (*a + a.transpose() - Matrix::<D>::identity() * 2.0).symmetric_eigenvalues()[0]
         };
-        let sv = |a: &Matrix3<f64>| {
-            let s = a.singular_values();
-            (s.min(), s.max())
-        };
-        Ok(report(m, sym_min, sv, |t| {
-            Matrix3::identity() * (1.0 - t) + m * t
+        Ok(report(m, sym_min, Matrix::singular_value_range, |t| {
+            Matrix::identity() * (1.0 - t) + *m * t
         }))
     }
 }
@@ -155,7 +145,7 @@ fn report<M>(
 
 /// The typical planar matrix M = s·R(θ) of eq. (5): [[s cos θ, −s sin θ], [s sin θ, s cos θ]].
 #[must_use]
-pub fn typical_matrix2(s: f64, theta: f64) -> Matrix2<f64> {
+pub fn typical_matrix2(s: f64, theta: f64) -> Matrix2 {
     let (sn, c) = theta.sin_cos();
     Matrix2::new(s * c, -s * sn, s * sn, s * c)
 }

@@ -1,7 +1,9 @@
 //! Interactive typical planar Class A curves from three points (eqs. (5)–(8)).
 
 use bez_core::{BezierCurve, Vector2};
-use nalgebra::{Complex, Matrix2};
+use num_complex::Complex;
+
+use crate::square::Matrix2;
 
 #[cfg(doc)]
 use crate::INTERPOLATION_TOLERANCE;
@@ -411,7 +413,7 @@ impl TypicalPlanar {
 
     /// M = s·R(θ).
     #[must_use]
-    pub fn matrix(&self) -> Matrix2<f64> {
+    pub fn matrix(&self) -> Matrix2 {
         typical_matrix2(self.s, self.theta)
     }
 

@@ -1,7 +1,7 @@
 //! Interactive typical spatial Class A curves from four points (eqs. (9)–(15)).
 
+use crate::square::Matrix3;
 use bez_core::{BezierCurve, Vector3};
-use nalgebra::Matrix3;
 
 use crate::{ClassAError, Interpolation, class_a_curve};
 
@@ -31,8 +31,8 @@ pub struct TypicalSpatial {
 /// R = I + sin θ K + (1 − cos θ)K², with K v = u × v (K the cross-product matrix of u). The printed eq. (12) is the
 /// transpose of K (it rotates by −θ); we use the usual convention and test v₁ = Rⁿ⁻¹v₀.
 #[must_use]
-pub fn rotation(axis: &Vector3, theta: f64) -> Matrix3<f64> {
-    let k = nalgebra::Vector3::<f64>::from(*axis).cross_matrix();
+pub fn rotation(axis: &Vector3, theta: f64) -> Matrix3 {
+    let k = Matrix3::cross_matrix(axis);
     Matrix3::identity() + k * theta.sin() + k * k * (1.0 - theta.cos())
 }
 
@@ -93,7 +93,7 @@ impl Setup {
         let mut sum = Vector3::zeros();
         for _ in 0..self.n {
             sum += leg;
-            leg = (m * nalgebra::Vector3::<f64>::from(leg)).into();
+            leg = m * leg;
         }
         (u, theta, sum)
     }
@@ -293,7 +293,7 @@ impl TypicalSpatial {
 
     /// M = s·R(u, θ) (eq. (9)).
     #[must_use]
-    pub fn matrix(&self) -> Matrix3<f64> {
+    pub fn matrix(&self) -> Matrix3 {
         rotation(&self.axis, self.theta) * self.s
     }
 

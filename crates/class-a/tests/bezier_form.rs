@@ -2,8 +2,9 @@
 
 use bez_core::proptest_support::check_bezier_form;
 use bez_core::{BezierForm, Vector2, Vector3};
+use class_a::Matrix3;
 use class_a::{ClassACurve, TypicalPlanar, cases};
-use nalgebra::{Complex, Matrix3};
+use nalgebra::Complex;
 
 /// A planar typical curve in complex notation, with w(t) = 1 + t(z − 1), z = s e^{iθ}:
 /// x'(t) = n L μ w(t)ⁿ⁻¹ and x(t) = b₀ + L μ (w(t)ⁿ − 1)/(z − 1), from the parameters alone.
@@ -63,11 +64,13 @@ fn spatial_class_a_curves_match_their_legs_through_the_trait() {
     // derivative x'(t) = n Σ Mʲ Δb₀ B_{j,n−1}(t): Bernstein sums, not de Casteljau.
     let typical = cases::fig8_typical().unwrap();
     let curve = ClassACurve::try_from(&typical).unwrap();
-    let m: Matrix3<f64> = curve.matrix();
+    let m: Matrix3 = curve.matrix();
+    // nalgebra's product as the independent oracle of the legs.
+    let na = nalgebra::Matrix3::from_fn(|i, j| m[(i, j)]);
     let n = typical.degree;
     let mut legs = vec![typical.v0 * typical.length];
     for j in 1..n {
-        legs.push(Vector3::from(m * nalgebra::Vector3::from(legs[j - 1])));
+        legs.push(Vector3::from(na * nalgebra::Vector3::from(legs[j - 1])));
     }
     let points: Vec<Vector3> = (0..=n)
         .map(|i| typical.b0 + legs[..i].iter().sum::<Vector3>())

@@ -2,7 +2,6 @@
 
 use bez_core::{BezierCurve, Vector2, Vector3};
 use class_a::*;
-use nalgebra::{Matrix2, Matrix3};
 use proptest::prelude::*;
 
 #[test]
@@ -139,7 +138,7 @@ proptest! {
         let m = typical_matrix2(s, th);
         let c = class_a_curve(&Vector2::zeros(), &Vector2::new(0.7, 0.2), &m, n).unwrap();
         // Forward matrix test when s > 1, reversed (M⁻¹) when s < 1.
-        let report = if s > 1.0 { ClassAReport::of_2x2(&m) } else { ClassAReport::of_2x2(&m.try_inverse().unwrap()) }.unwrap();
+        let report = if s > 1.0 { ClassAReport::of_2x2(&m) } else { ClassAReport::of_2x2(&typical_matrix2(1.0 / s, -th)) }.unwrap();
         prop_assert!(report.farin3.holds);
         let cert = curvature_certificate(&c).unwrap();
         prop_assert!(cert.is_monotone());
@@ -204,5 +203,60 @@ mod certificate_vs_sampling {
                 }
             }
         }
+    }
+}
+
+proptest! {
+    #![proptest_config(ProptestConfig::with_cases(256))]
+    /// The crate's Jacobi eigenvalues and singular values against nalgebra's (an independent
+    /// implementation), plus the invariants Σσ² = ‖M‖²_F and Πσ = |det M|.
+    #[test]
+    fn small_matrix_spectra_match_nalgebra(e in proptest::collection::vec(-3.0f64..3.0, 9)) {
+        let m3 = Matrix3::from_rows([[e[0], e[1], e[2]], [e[3], e[4], e[5]], [e[6], e[7], e[8]]]);
+        let n3 = nalgebra::Matrix3::from_fn(|i, j| m3[(i, j)]);
+        let mut sv: Vec<f64> = n3.singular_values().iter().copied().collect();
+        sv.sort_by(f64::total_cmp);
+        let ours = m3.singular_values();
+        for (a, b) in ours.iter().zip(&sv) {
+            prop_assert!((a - b).abs() <= 1e-13 * sv[2], "{ours:?} vs {sv:?}");
+        }
+        let frob: f64 = m3.iter().map(|x| x * x).sum();
+        prop_assert!((ours.iter().map(|s| s * s).sum::<f64>() - frob).abs() <= 1e-12 * frob);
+        prop_assert!((ours.iter().product::<f64>() - m3.determinant().abs()).abs() <= 1e-12 * (1.0 + frob * frob));
+        let sym = (n3 + n3.transpose()) * 0.5;
+        let mut ev: Vec<f64> = sym.symmetric_eigenvalues().iter().copied().collect();
+        ev.sort_by(f64::total_cmp);
+        let ours = m3.symmetric_eigenvalues();
+        for (a, b) in ours.iter().zip(&ev) {
+            prop_assert!((a - b).abs() <= 1e-13 * (1.0 + ev[0].abs().max(ev[2].abs())), "{ours:?} vs {ev:?}");
+        }
+        let m2 = Matrix2::new(e[0], e[1], e[2], e[3]);
+        let n2 = nalgebra::Matrix2::new(e[0], e[1], e[2], e[3]);
+        let mut sv: Vec<f64> = n2.singular_values().iter().copied().collect();
+        sv.sort_by(f64::total_cmp);
+        let ours = m2.singular_values();
+        prop_assert!((ours[0] - sv[0]).abs() <= 1e-13 * sv[1] && (ours[1] - sv[1]).abs() <= 1e-13 * sv[1]);
+        prop_assert_eq!(m2.determinant(), n2.determinant());
+        if let Some(inv) = m2.try_inverse() {
+            let id = m2 * inv;
+            let cond = sv[1] / sv[0];
+            for (i, j) in [(0, 0), (0, 1), (1, 0), (1, 1)] {
+                let want = if i == j { 1.0 } else { 0.0 };
+                prop_assert!((id[(i, j)] - want).abs() <= 1e-14 * cond, "{id:?}");
+            }
+        }
+    }
+}
+
+#[test]
+fn scaled_rotations_have_equal_singular_values() {
+    for (s, th) in [(1.0, 0.3), (2.5, -1.2), (0.1, 3.0)] {
+        let sv = typical_matrix2(s, th).singular_values();
+        assert!((sv[0] - s).abs() < 1e-15 * s.max(1.0) && (sv[1] - s).abs() < 1e-15 * s.max(1.0));
+        let r = rotation(&Vector3::new(0.0, 0.6, 0.8), th) * s;
+        for x in r.singular_values() {
+            assert!((x - s).abs() < 1e-14 * s.max(1.0), "{x} vs {s}");
+        }
+        assert!((r.determinant() - s * s * s).abs() < 1e-13 * s.max(1.0).powi(3));
     }
 }

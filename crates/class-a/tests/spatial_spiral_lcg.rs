@@ -9,6 +9,7 @@ fn rotation_maps_v0_to_v1() {
     let c = TypicalSpatial::from_points(&a, 7).unwrap();
     let r = rotation(&c.axis, c.theta);
     let v1 = (a[3] - a[2]).normalize();
+    let r = nalgebra::Matrix3::from_fn(|i, j| r[(i, j)]);
     assert!((Vector3::from(r.pow(6) * nalgebra::Vector3::from(c.v0)) - v1).norm() < 1e-12);
     assert!((c.axis.dot(&c.v0) - c.axis.dot(&v1)).abs() < 1e-12);
 }

@@ -6,7 +6,7 @@ use bez_core::{BezierCurve, BezierForm, Vector2, de_casteljau_halve, de_castelja
 
 use crate::error::SubdivError;
 use crate::measure::within_chord_line;
-use crate::split_rule::SplitRule;
+use crate::split_rule::{Branch, SplitRule};
 
 /// The paper's tolerance ε of eq. (3).
 pub const DEFAULT_TOLERANCE: f64 = 1e-5;
@@ -187,8 +187,14 @@ fn flatten_bezier(
     let mut stats = FlattenStats::default();
     let mut pieces = Vec::new();
     // Depth-first, left piece first, so pieces come out in parameter order.
-    let mut stack = vec![(curve.points().to_vec(), 0usize, 0.0_f64, 1.0_f64, true)];
-    while let Some((points, depth, t0, t1, searching)) = stack.pop() {
+    let mut stack = vec![(
+        curve.points().to_vec(),
+        0usize,
+        0.0_f64,
+        1.0_f64,
+        Branch::Searching,
+    )];
+    while let Some((points, depth, t0, t1, branch)) = stack.pop() {
         let flat = size == 0.0 || within_chord_line(&points, eps * size);
         if flat {
             stats.depth = stats.depth.max(depth);
@@ -200,7 +206,7 @@ fn flatten_bezier(
                 limit: options.max_depth,
             });
         }
-        let choice = options.rule.choose(&points, depth, searching)?;
+        let choice = options.rule.choose(&points, depth, branch)?;
         stats.evaluations += choice.evaluations;
         stats.splits += 1;
         let mut left = vec![Vector2::zeros(); n];
@@ -212,7 +218,11 @@ fn flatten_bezier(
             de_casteljau_split(&points, choice.t, &mut left, &mut right)?;
         }
         let tm = t0 + choice.t * (t1 - t0);
-        let keep = searching && choice.keep_searching;
+        // A settled branch stays settled.
+        let keep = match branch {
+            Branch::Searching => choice.next,
+            Branch::Settled => Branch::Settled,
+        };
         stack.push((right, depth + 1, tm, t1, keep));
         stack.push((left, depth + 1, t0, tm, keep));
     }

@@ -75,7 +75,7 @@ pub use crate::near_optimal::{flatten_near_optimal, optimal_segment_count};
 #[cfg(feature = "paper")]
 pub use crate::split_rule::split_objective;
 pub use crate::split_rule::{
-    ADAPTIVE_BAND, Choice, Levels, Objective, PAPER_LEVELS, Search, SplitRule,
+    ADAPTIVE_BAND, Branch, Choice, Levels, Objective, PAPER_LEVELS, Search, SplitRule,
 };
 
 /// The README's example, compiled and run with the doctests.

@@ -118,8 +118,8 @@ impl SplitRule {
         }
     }
 
-    /// The split parameter for a piece at `depth`; `searching` is false once an adaptive rule
-    /// has stopped optimizing this branch.
+    /// The split parameter for a piece at `depth`; `branch` is [`Branch::Settled`] once an
+    /// adaptive rule has stopped optimizing this branch (see [`Choice::next`]).
     ///
     /// # Errors
     /// [`SubdivError::Optimizer`] if Brent's method fails.
@@ -127,12 +127,12 @@ impl SplitRule {
         &self,
         points: &[Vector2],
         depth: usize,
-        searching: bool,
+        branch: Branch,
     ) -> Result<Choice, SubdivError> {
         let fixed = Choice {
             t: 0.5,
             evaluations: 0,
-            keep_searching: false,
+            next: Branch::Settled,
         };
         let Self::Optimal {
             objective,
@@ -144,7 +144,7 @@ impl SplitRule {
         };
         let active = match levels {
             Levels::First(n) => depth < n,
-            Levels::Adaptive => searching,
+            Levels::Adaptive => branch == Branch::Searching,
         };
         if !active || points.len() < 3 {
             return Ok(fixed);
@@ -162,14 +162,15 @@ impl SplitRule {
                 brent(&f, (t0 - 0.05).max(1e-3), (t0 + 0.05).min(1.0 - 1e-3))?
             }
         };
-        let keep_searching = match levels {
-            Levels::First(_) => true,
-            Levels::Adaptive => (t - 0.5).abs() > ADAPTIVE_BAND,
+        let next = match levels {
+            Levels::First(_) => Branch::Searching,
+            Levels::Adaptive if (t - 0.5).abs() > ADAPTIVE_BAND => Branch::Searching,
+            Levels::Adaptive => Branch::Settled,
         };
         Ok(Choice {
             t,
             evaluations: counter.get(),
-            keep_searching,
+            next,
         })
     }
 }
@@ -183,7 +184,16 @@ pub struct Choice {
     /// Objective evaluations spent (each one is a de Casteljau split plus two measures).
     pub evaluations: usize,
     /// Whether an adaptive rule keeps optimizing the two children.
-    pub keep_searching: bool,
+    pub next: Branch,
+}
+
+/// Whether a rule still optimizes the split parameter on a branch of the subdivision tree.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
+pub enum Branch {
+    /// The rule optimizes the split of this piece.
+    Searching,
+    /// An adaptive rule found splits near ½ above this piece and splits it at ½.
+    Settled,
 }
 
 /// The objective of a split at t: measure(left piece) + measure(right piece).
@@ -259,10 +269,17 @@ mod tests {
             Vector2::new(1.0, 3.0),
             Vector2::new(4.0, 0.0),
         ];
-        assert_eq!(SplitRule::Fixed.choose(&p, 0, true).unwrap().t, 0.5);
-        let c = SplitRule::flatness().choose(&p, 3, true).unwrap();
+        assert_eq!(
+            SplitRule::Fixed.choose(&p, 0, Branch::Searching).unwrap().t,
+            0.5
+        );
+        let c = SplitRule::flatness()
+            .choose(&p, 3, Branch::Searching)
+            .unwrap();
         assert_eq!((c.t, c.evaluations), (0.5, 0));
-        let c = SplitRule::flatness().choose(&p, 0, true).unwrap();
+        let c = SplitRule::flatness()
+            .choose(&p, 0, Branch::Searching)
+            .unwrap();
         assert_eq!(c.evaluations, 13);
     }
 
@@ -280,9 +297,9 @@ mod tests {
             Vector2::new(0.4, 0.0),
             Vector2::new(6.0, 0.0),
         ];
-        let c = rule.choose(&lopsided, 10, true).unwrap();
+        let c = rule.choose(&lopsided, 10, Branch::Searching).unwrap();
         assert!(
-            (c.t - 0.5).abs() > ADAPTIVE_BAND && c.keep_searching,
+            (c.t - 0.5).abs() > ADAPTIVE_BAND && c.next == Branch::Searching,
             "{c:?}"
         );
         // Symmetric: the optimum is ½ (Property 2.2), so the descendants stop searching.
@@ -292,9 +309,9 @@ mod tests {
             Vector2::new(3.0, 3.0),
             Vector2::new(4.0, 0.0),
         ];
-        let c = rule.choose(&symmetric, 0, true).unwrap();
-        assert!(c.t == 0.5 && !c.keep_searching, "{c:?}");
-        let c = rule.choose(&lopsided, 0, false).unwrap();
+        let c = rule.choose(&symmetric, 0, Branch::Searching).unwrap();
+        assert!(c.t == 0.5 && c.next == Branch::Settled, "{c:?}");
+        let c = rule.choose(&lopsided, 0, Branch::Settled).unwrap();
         assert_eq!((c.t, c.evaluations), (0.5, 0));
     }
 }

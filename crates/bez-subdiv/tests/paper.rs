@@ -8,8 +8,8 @@
 use bez_core::proptest_support::curve;
 use bez_core::{BezierCurve, Vector2};
 use bez_subdiv::{
-    FlattenOptions, Levels, Objective, Search, SplitRule, curve_size, distance_to_chord_line,
-    flatten, split_objective,
+    Branch, FlattenOptions, Levels, Objective, Search, SplitRule, curve_size,
+    distance_to_chord_line, flatten, split_objective,
 };
 use proptest::prelude::*;
 
@@ -45,7 +45,7 @@ proptest! {
     ) {
         let pts: Vec<_> = p.iter().map(|&(x, y)| Vector2::new(x, y)).collect();
         prop_assume!(bez_subdiv::hull_area(&pts) > 1e-3);
-        let c = exact(Objective::HullArea).choose(&pts, 0, true).unwrap();
+        let c = exact(Objective::HullArea).choose(&pts, 0, Branch::Searching).unwrap();
         prop_assert!((c.t - 0.5).abs() < 1e-6, "t* = {}", c.t);
     }
 
@@ -54,7 +54,7 @@ proptest! {
     #[test]
     fn property_2_3_symmetric_quadratic_flatness_optimum_is_one_half(w in 0.1..10.0f64, h in 0.1..10.0f64) {
         let pts = [Vector2::new(-w, 0.0), Vector2::new(0.0, h), Vector2::new(w, 0.0)];
-        let c = exact(Objective::Flatness).choose(&pts, 0, true).unwrap();
+        let c = exact(Objective::Flatness).choose(&pts, 0, Branch::Searching).unwrap();
         prop_assert!((c.t - 0.5).abs() < 1e-6, "t* = {}", c.t);
     }
 
@@ -123,7 +123,9 @@ fn flatness_rule_splits_at_the_grid_optimum() {
         Vector2::new(1.0, 3.0),
         Vector2::new(5.0, 0.0),
     ];
-    let c = SplitRule::flatness().choose(&pts, 0, true).unwrap();
+    let c = SplitRule::flatness()
+        .choose(&pts, 0, Branch::Searching)
+        .unwrap();
     // Brute force over the same grid.
     let best = (0..=12)
         .map(|k| 0.2 + 0.05 * f64::from(k))
@@ -137,7 +139,9 @@ fn flatness_rule_splits_at_the_grid_optimum() {
         .unwrap();
     assert_eq!(c.t, best);
     // The exact optimum is at least as good as the grid's.
-    let e = exact(Objective::Flatness).choose(&pts, 0, true).unwrap();
+    let e = exact(Objective::Flatness)
+        .choose(&pts, 0, Branch::Searching)
+        .unwrap();
     assert!(
         split_objective(Objective::Flatness, &pts, e.t)
             <= split_objective(Objective::Flatness, &pts, best) + 1e-15

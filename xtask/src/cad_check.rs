@@ -83,15 +83,17 @@ pub(crate) fn run() -> Result<(), DynError> {
             }
         }
         samples.push(']');
-        for (kind, text) in [
-            ("step", write_step(&sol.spline, name)?),
-            ("iges", write_iges(&sol.spline, name)?),
-        ] {
+        for kind in ["step", "iges"] {
             let path = dir.join(format!(
                 "{name}.{}",
                 if kind == "step" { "stp" } else { "igs" }
             ));
-            fs::write(&path, text)?;
+            let file = std::io::BufWriter::new(fs::File::create(&path)?);
+            if kind == "step" {
+                write_step(&sol.spline, name, file)?;
+            } else {
+                write_iges(&sol.spline, name, file)?;
+            }
             if spec.len() > 1 {
                 spec.push(',');
             }

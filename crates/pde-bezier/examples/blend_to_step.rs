@@ -70,7 +70,8 @@ fn run(out: Option<&str>) -> Result<(), PdeError> {
         let radius = (p.x() * p.x() + p.y() * p.y()).sqrt();
         println!("u = {u}: radius {radius:.4}, height {:.4}", p.z());
     }
-    let step = write_step(&solution.spline, "bloor-wilson blend")?;
+    let mut step = Vec::new();
+    write_step(&solution.spline, "bloor-wilson blend", &mut step)?;
     match out {
         Some(path) => match std::fs::write(path, &step) {
             Ok(()) => println!("wrote {path} ({} bytes)", step.len()),

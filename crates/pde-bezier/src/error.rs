@@ -156,10 +156,32 @@ pub enum PdeError {
         /// What went wrong.
         what: String,
     },
+    /// Writing a file failed.
+    #[error("write failed: {message}")]
+    Io {
+        /// The I/O error's message.
+        message: String,
+    },
+    /// A B-spline surface's degree is outside 1..=`bez_core::MAX_DEGREE`, or its knots leave
+    /// an empty parameter range.
+    #[error("B-spline surface: {what}")]
+    InvalidSpline {
+        /// What is wrong.
+        what: String,
+    },
     /// An evaluation parameter is outside [0, 1].
     #[error("grid parameter {value} is outside [0, 1]")]
     ParameterOutOfRange {
         /// The parameter.
         value: f64,
     },
+}
+
+impl PdeError {
+    /// An I/O error, by its message (so that the error stays `Clone` and `PartialEq`).
+    pub(crate) fn io(e: std::io::Error) -> Self {
+        Self::Io {
+            message: e.to_string(),
+        }
+    }
 }

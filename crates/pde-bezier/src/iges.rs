@@ -44,11 +44,23 @@ fn with_delims(items: &[String]) -> Vec<String> {
         .collect()
 }
 
-/// Writes `surface` as an IGES 5.3 file with one entity 128.
+/// Writes `surface` as an IGES 5.3 file with one entity 128 to `out`.
 ///
 /// # Errors
-/// The errors of [`BSplineSurface::validate`].
-pub fn write_iges(surface: &BSplineSurface, name: &str) -> Result<String, PdeError> {
+/// The errors of [`BSplineSurface::validate`]; [`PdeError::Io`] when writing fails.
+pub fn write_iges(
+    surface: &BSplineSurface,
+    name: &str,
+    mut out: impl std::io::Write,
+) -> Result<(), PdeError> {
+    let text = iges_text(surface, name)?;
+    out.write_all(text.as_bytes())
+        .and_then(|()| out.flush())
+        .map_err(PdeError::io)
+}
+
+/// The IGES text of [`write_iges`].
+fn iges_text(surface: &BSplineSurface, name: &str) -> Result<String, PdeError> {
     surface.validate()?;
     let name: String = name
         .chars()
@@ -165,68 +177,119 @@ pub fn write_iges(surface: &BSplineSurface, name: &str) -> Result<String, PdeErr
 }
 
 fn parse_real(s: &str) -> Result<f64, PdeError> {
-    s.trim()
-        .replace(['D', 'd'], "E")
-        .parse()
-        .map_err(|_| iges_err(format!("bad real {s}")))
+    match s.trim().replace(['D', 'd'], "E").parse::<f64>() {
+        Ok(x) if x.is_finite() => Ok(x),
+        _ => Err(iges_err(format!("bad real {s:.40}"))),
+    }
 }
 
-/// Reads the first entity 128 of an IGES file written by [`write_iges`] (unit weights).
+/// Reads every entity 128 (rational B-spline surface with unit weights) of an IGES file, in
+/// the order of the parameter section.
+///
+/// Fixed 80-column records (LF or CRLF); the parameter section's records are split at the
+/// record delimiter and read for every entity type 128, whatever other entities the file holds
+/// (as written by this crate or by other CAD systems, with `D` or `E` exponents). Counts read
+/// from the file are checked against the parameters present before anything is allocated; the
+/// reader never panics and allocates in proportion to the file.
 ///
 /// # Errors
-/// [`PdeError::Iges`] for malformed lines, a missing entity, non-unit weights or bad counts.
-pub fn read_iges(text: &str) -> Result<BSplineSurface, PdeError> {
+/// [`PdeError::Iges`] for malformed lines, no entity 128, non-unit weights or counts that do
+/// not match the data; the errors of [`BSplineSurface::validate`].
+pub fn read_iges(text: &str) -> Result<Vec<BSplineSurface>, PdeError> {
     let mut data = String::new();
     let mut saw_terminate = false;
-    for line in text.lines() {
-        if !line.is_ascii() || line.len() != 80 {
+    for (n, line) in text.lines().enumerate() {
+        let bytes = line.as_bytes();
+        if !line.is_ascii() || bytes.len() < 73 {
             return Err(iges_err(format!(
-                "line of {} columns, expected 80",
+                "line {}: {} columns, expected 80",
+                n + 1,
                 line.len()
             )));
         }
-        match line.as_bytes()[72] {
-            b'P' => data.push_str(&line[..64]),
+        match bytes[72] {
+            b'P' => {
+                data.push_str(&line[..64]);
+                // A record of the parameter section ends inside a line; keep lines apart.
+                data.push(' ');
+            }
             b'T' => saw_terminate = true,
             b'S' | b'G' | b'D' => {}
-            other => return Err(iges_err(format!("unknown section '{}'", other as char))),
+            other => {
+                return Err(iges_err(format!(
+                    "line {}: unknown section '{}'",
+                    n + 1,
+                    other as char
+                )));
+            }
         }
     }
     if !saw_terminate {
         return Err(iges_err("no terminate section"));
     }
-    let record = data
+    let surfaces: Vec<BSplineSurface> = data
         .split(';')
-        .next()
-        .ok_or_else(|| iges_err("no parameter record"))?;
-    let tokens: Vec<&str> = record.split(',').map(str::trim).collect();
+        .map(|record| record.split(',').map(str::trim).collect::<Vec<_>>())
+        .filter(|tokens| tokens.first() == Some(&"128"))
+        .map(|tokens| surface_of(&tokens))
+        .collect::<Result<_, _>>()?;
+    if surfaces.is_empty() {
+        return Err(iges_err("no entity 128"));
+    }
+    Ok(surfaces)
+}
+
+/// One entity 128 from its parameter tokens (the first is "128").
+fn surface_of(tokens: &[&str]) -> Result<BSplineSurface, PdeError> {
     let int = |i: usize| -> Result<usize, PdeError> {
         tokens
             .get(i)
             .and_then(|t| t.parse().ok())
             .ok_or_else(|| iges_err(format!("bad integer parameter {i}")))
     };
-    if int(0)? != 128 {
-        return Err(iges_err("first entity is not 128"));
-    }
     let (k1, k2, m1, m2) = (int(1)?, int(2)?, int(3)?, int(4)?);
-    let (cu, cv) = (k1 + 1, k2 + 1);
-    let mut pos = 10;
+    for m in [m1, m2] {
+        if !(1..=bez_core::MAX_DEGREE).contains(&m) {
+            return Err(iges_err(format!(
+                "degree {m} outside 1..={}",
+                bez_core::MAX_DEGREE
+            )));
+        }
+    }
+    // Every count is bounded by the tokens present before it is used (no overflow, no
+    // allocation the file does not back).
+    let available = tokens.len();
+    let count = |k: usize| k.checked_add(1).filter(|&c| c <= available);
+    let (Some(cu), Some(cv)) = (count(k1), count(k2)) else {
+        return Err(iges_err("control point counts exceed the parameter record"));
+    };
+    let grid = cu
+        .checked_mul(cv)
+        .filter(|&g| g.saturating_mul(4) <= available)
+        .ok_or_else(|| iges_err("control grid exceeds the parameter record"))?;
+    let mut pos: usize = 10;
     let mut take = |count: usize| -> Result<Vec<f64>, PdeError> {
-        let slice = tokens
-            .get(pos..pos + count)
+        let end = pos
+            .checked_add(count)
+            .filter(|&e| e <= available)
             .ok_or_else(|| iges_err("parameter record too short"))?;
-        pos += count;
-        slice.iter().map(|t| parse_real(t)).collect()
+        let values = tokens[pos..end]
+            .iter()
+            .map(|t| parse_real(t))
+            .collect::<Result<Vec<_>, _>>()?;
+        pos = end;
+        Ok(values)
     };
     let knots_u = take(cu + m1 + 1)?;
     let knots_v = take(cv + m2 + 1)?;
-    let weights = take(cu * cv)?;
+    let weights = take(grid)?;
     if weights.iter().any(|&w| w != 1.0) {
-        return Err(iges_err("rational surfaces are not supported"));
+        return Err(iges_err(
+            "rational surfaces (weights other than 1) are not supported",
+        ));
     }
-    let coords = take(3 * cu * cv)?;
-    let mut points = vec![Vector3::zeros(); cu * cv];
+    let coords = take(3 * grid)?;
+    let mut points = vec![Vector3::zeros(); grid];
     for j in 0..cv {
         for i in 0..cu {
             let k = 3 * (j * cu + i);

@@ -27,23 +27,39 @@ impl BSplineSurface {
     /// Number of control points in u.
     #[must_use]
     pub fn count_u(&self) -> usize {
-        self.knots_u.len().saturating_sub(self.degree_u + 1)
+        self.knots_u
+            .len()
+            .saturating_sub(self.degree_u.saturating_add(1))
     }
 
     /// Number of control points in v.
     #[must_use]
     pub fn count_v(&self) -> usize {
-        self.knots_v.len().saturating_sub(self.degree_v + 1)
+        self.knots_v
+            .len()
+            .saturating_sub(self.degree_v.saturating_add(1))
     }
 
-    /// Checks the shape: knot counts, non-decreasing knots, finite values.
+    /// Checks the shape: degrees in 1..=`bez_core::MAX_DEGREE`, knot counts, non-decreasing
+    /// knots with a non-empty parameter range, finite values.
     ///
     /// # Errors
+    /// [`PdeError::InvalidSpline`] for a degree out of range or an empty parameter range,
     /// [`PdeError::Core`] with a grid-shape error, [`PdeError::NonFinite`],
     /// [`PdeError::DecreasingKnots`].
     pub fn validate(&self) -> Result<(), PdeError> {
+        for (direction, degree) in [("u", self.degree_u), ("v", self.degree_v)] {
+            if !(1..=bez_core::MAX_DEGREE).contains(&degree) {
+                return Err(PdeError::InvalidSpline {
+                    what: format!(
+                        "degree in {direction} is {degree}, outside 1..={}",
+                        bez_core::MAX_DEGREE
+                    ),
+                });
+            }
+        }
         let (cu, cv) = (self.count_u(), self.count_v());
-        if cu == 0 || cv == 0 || self.points.len() != cu * cv {
+        if cu == 0 || cv == 0 || Some(self.points.len()) != cu.checked_mul(cv) {
             return Err(bez_core::CoreError::GridShape {
                 rows: cu,
                 cols: cv,
@@ -63,6 +79,18 @@ impl BSplineSurface {
                 return Err(PdeError::DecreasingKnots {
                     direction,
                     index: index + 1,
+                });
+            }
+        }
+        for (direction, k, p, c) in [
+            ("u", &self.knots_u, self.degree_u, cu),
+            ("v", &self.knots_v, self.degree_v, cv),
+        ] {
+            // The parameter range [t_p, t_count] must not be empty (all-equal knots would
+            // evaluate to NaN).
+            if k[p] >= k[c] {
+                return Err(PdeError::InvalidSpline {
+                    what: format!("the knots in {direction} leave an empty parameter range"),
                 });
             }
         }

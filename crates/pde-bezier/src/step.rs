@@ -9,7 +9,7 @@
 use crate::error::PdeError;
 use crate::spline_surface::BSplineSurface;
 use bez_core::Vector3;
-use std::collections::HashMap;
+use std::collections::BTreeMap;
 use std::fmt::Write as _;
 
 /// A Part 21 real: 17 significant digits, always a decimal point, upper-case exponent.
@@ -44,11 +44,24 @@ fn list<T>(items: &[T], f: impl Fn(&T) -> String) -> String {
 }
 
 /// Writes `surface` as an AP214 STEP file (one `B_SPLINE_SURFACE_WITH_KNOTS` in a geometric
-/// set). `name` is the product name (quotes are removed).
+/// set) to `out` (a file, a `Vec<u8>`, …). `name` is the product name (quotes are removed).
 ///
 /// # Errors
-/// The errors of [`BSplineSurface::validate`] (bad shape, non-finite values).
-pub fn write_step(surface: &BSplineSurface, name: &str) -> Result<String, PdeError> {
+/// The errors of [`BSplineSurface::validate`] (bad shape, non-finite values);
+/// [`PdeError::Io`] when writing fails.
+pub fn write_step(
+    surface: &BSplineSurface,
+    name: &str,
+    mut out: impl std::io::Write,
+) -> Result<(), PdeError> {
+    let text = step_text(surface, name)?;
+    out.write_all(text.as_bytes())
+        .and_then(|()| out.flush())
+        .map_err(PdeError::io)
+}
+
+/// The STEP text of [`write_step`].
+fn step_text(surface: &BSplineSurface, name: &str) -> Result<String, PdeError> {
     surface.validate()?;
     let name: String = name.chars().filter(|c| *c != '\'' && *c != '\\').collect();
     let mut s = String::new();
@@ -150,6 +163,63 @@ fn step_err(what: impl Into<String>) -> PdeError {
     PdeError::Step { what: what.into() }
 }
 
+/// Deepest list nesting the reader accepts (a surface needs 3; deeper input is refused instead
+/// of recursing without bound).
+const MAX_NESTING: usize = 32;
+
+/// The statements of a Part 21 file (each up to, not including, its ';'), with comments
+/// `/* … */` removed and strings (with their `''` escapes) kept intact, so a ';' inside a
+/// string does not end a statement. One pass, no recursion.
+fn statements(text: &str) -> Result<Vec<String>, PdeError> {
+    let b = text.as_bytes();
+    let (mut out, mut cur) = (Vec::new(), Vec::new());
+    let mut i = 0;
+    while i < b.len() {
+        match b[i] {
+            b'\'' => {
+                // A string: copy through its closing quote ('' is an escaped quote).
+                cur.push(b'\'');
+                i += 1;
+                loop {
+                    let Some(&c) = b.get(i) else {
+                        return Err(step_err("unterminated string"));
+                    };
+                    cur.push(c);
+                    i += 1;
+                    if c == b'\'' {
+                        if b.get(i) == Some(&b'\'') {
+                            cur.push(b'\'');
+                            i += 1;
+                        } else {
+                            break;
+                        }
+                    }
+                }
+            }
+            b'/' if b.get(i + 1) == Some(&b'*') => {
+                let end = text[i + 2..]
+                    .find("*/")
+                    .ok_or_else(|| step_err("unterminated comment"))?;
+                i += end + 4;
+                cur.push(b' ');
+            }
+            b';' => {
+                out.push(String::from_utf8_lossy(&cur).trim().to_string());
+                cur.clear();
+                i += 1;
+            }
+            c => {
+                cur.push(c);
+                i += 1;
+            }
+        }
+    }
+    if !String::from_utf8_lossy(&cur).trim().is_empty() {
+        return Err(step_err("text after the last ';'"));
+    }
+    Ok(out)
+}
+
 struct Parser<'a> {
     s: &'a [u8],
     pos: usize,
@@ -162,7 +232,10 @@ impl Parser<'_> {
         }
     }
 
-    fn param(&mut self) -> Result<Param, PdeError> {
+    fn param(&mut self, depth: usize) -> Result<Param, PdeError> {
+        if depth > MAX_NESTING {
+            return Err(step_err(format!("lists nested deeper than {MAX_NESTING}")));
+        }
         self.skip_ws();
         let Some(&c) = self.s.get(self.pos) else {
             return Err(step_err("unexpected end of parameters"));
@@ -177,7 +250,7 @@ impl Parser<'_> {
                     return Ok(Param::List(items));
                 }
                 loop {
-                    items.push(self.param()?);
+                    items.push(self.param(depth + 1)?);
                     self.skip_ws();
                     match self.s.get(self.pos) {
                         Some(b',') => self.pos += 1,
@@ -195,22 +268,35 @@ impl Parser<'_> {
                 while self.pos < self.s.len() && self.s[self.pos].is_ascii_digit() {
                     self.pos += 1;
                 }
-                let text = std::str::from_utf8(&self.s[start..self.pos]).unwrap_or("");
+                let text = core::str::from_utf8(&self.s[start..self.pos]).unwrap_or("");
                 text.parse()
                     .map(Param::Ref)
                     .map_err(|_| step_err(format!("bad reference #{text}")))
             }
             b'\'' => {
                 self.pos += 1;
-                let start = self.pos;
-                while self.pos < self.s.len() && self.s[self.pos] != b'\'' {
+                let mut text = Vec::new();
+                loop {
+                    let Some(&c) = self.s.get(self.pos) else {
+                        return Err(step_err("unterminated string"));
+                    };
                     self.pos += 1;
+                    if c == b'\'' {
+                        if self.s.get(self.pos) == Some(&b'\'') {
+                            self.pos += 1;
+                        } else {
+                            break;
+                        }
+                    }
+                    text.push(c);
                 }
-                let text = String::from_utf8_lossy(&self.s[start..self.pos]).into_owned();
-                self.pos += 1;
-                Ok(Param::Text(text))
+                Ok(Param::Text(String::from_utf8_lossy(&text).into_owned()))
             }
-            b'.' => {
+            b'.' if self
+                .s
+                .get(self.pos + 1)
+                .is_some_and(u8::is_ascii_alphabetic) =>
+            {
                 self.pos += 1;
                 let start = self.pos;
                 while self.pos < self.s.len() && self.s[self.pos] != b'.' {
@@ -235,7 +321,7 @@ impl Parser<'_> {
                 if self.s.get(self.pos) != Some(&b'(') {
                     return Err(step_err("a typed parameter needs '('"));
                 }
-                self.param()
+                self.param(depth + 1)
             }
             _ => {
                 let start = self.pos;
@@ -245,90 +331,143 @@ impl Parser<'_> {
                 {
                     self.pos += 1;
                 }
-                let text = std::str::from_utf8(&self.s[start..self.pos]).unwrap_or("");
+                let text = core::str::from_utf8(&self.s[start..self.pos]).unwrap_or("");
                 if text.is_empty() {
                     return Err(step_err(format!("unexpected character '{}'", c as char)));
                 }
                 if !text.contains('.') && text.contains(['E', 'e']) {
                     return Err(step_err(format!("real without a decimal point: {text}")));
                 }
-                text.parse()
-                    .map(Param::Num)
-                    .map_err(|_| step_err(format!("bad number {text}")))
+                match text.parse::<f64>() {
+                    Ok(x) if x.is_finite() => Ok(Param::Num(x)),
+                    _ => Err(step_err(format!("bad number {text}"))),
+                }
             }
         }
     }
 }
 
-/// Reads the first `B_SPLINE_SURFACE_WITH_KNOTS` of a STEP file written by [`write_step`]
-/// (non-rational, explicit knots; other entities are only checked for syntax).
-///
-/// # Errors
-/// [`PdeError::Step`] for a syntax error, a missing entity or reference, or a malformed surface.
-pub fn read_step(text: &str) -> Result<BSplineSurface, PdeError> {
-    let start = text
-        .find("DATA;")
-        .ok_or_else(|| step_err("no DATA section"))?;
-    let end = text
-        .find("ENDSEC;\nEND-ISO-10303-21;")
-        .ok_or_else(|| step_err("no end"))?;
-    if !text.starts_with("ISO-10303-21;") {
+/// The data section's simple entity instances by id (complex instances `#n=(A(…)B(…))` are
+/// checked for syntax and kept by name "(complex)").
+type Entities = BTreeMap<usize, (String, Vec<Param>)>;
+
+fn data_entities(text: &str) -> Result<Entities, PdeError> {
+    let stmts = statements(text)?;
+    let mut it = stmts.iter().map(String::as_str);
+    if it.next() != Some("ISO-10303-21") {
         return Err(step_err("missing ISO-10303-21 header"));
     }
-    if end < start + 5 {
-        return Err(step_err("the DATA section ends before it starts"));
-    }
-    let mut entities: HashMap<usize, (String, Vec<Param>)> = HashMap::new();
-    for stmt in text[start + 5..end].split(';') {
-        let stmt = stmt.trim();
-        if stmt.is_empty() {
-            continue;
+    // Header entities, then DATA (or DATA('name',…) in later editions).
+    it.by_ref()
+        .find(|s| *s == "DATA" || s.starts_with("DATA(") || s.starts_with("DATA ("))
+        .ok_or_else(|| step_err("no DATA section"))?;
+    let mut entities = Entities::new();
+    let mut ended = false;
+    for stmt in it.by_ref() {
+        if stmt == "ENDSEC" {
+            ended = true;
+            break;
         }
         let (id, body) = stmt
             .split_once('=')
-            .ok_or_else(|| step_err(format!("statement without '=': {stmt}")))?;
+            .ok_or_else(|| step_err(format!("statement without '=': {stmt:.60}")))?;
         let id: usize = id
             .trim()
             .strip_prefix('#')
             .and_then(|x| x.parse().ok())
-            .ok_or_else(|| step_err(format!("bad entity id {id}")))?;
+            .ok_or_else(|| step_err(format!("bad entity id {id:.30}")))?;
         let body = body.trim();
-        if body.starts_with('(') {
-            // A complex entity: check its syntax only.
+        let entry = if body.starts_with('(') {
+            // A complex instance: a list of typed sub-instances separated by spaces; checked
+            // by reading each sub-instance's parameters.
             let mut p = Parser {
-                s: body.as_bytes(),
+                s: &body.as_bytes()[1..],
                 pos: 0,
             };
-            let _ = p.param();
-            entities.insert(id, ("(complex)".to_string(), Vec::new()));
-            continue;
-        }
-        let open = body
-            .find('(')
-            .ok_or_else(|| step_err(format!("#{id}: no parameters")))?;
-        let name = body[..open].to_string();
-        let mut p = Parser {
-            s: &body.as_bytes()[open..],
-            pos: 0,
+            loop {
+                p.skip_ws();
+                match p.s.get(p.pos) {
+                    Some(b')') => break,
+                    Some(c) if c.is_ascii_alphabetic() => {
+                        p.param(1)?;
+                    }
+                    _ => return Err(step_err(format!("#{id}: bad complex instance"))),
+                }
+            }
+            ("(complex)".to_string(), Vec::new())
+        } else {
+            let open = body
+                .find('(')
+                .ok_or_else(|| step_err(format!("#{id}: no parameters")))?;
+            let name = body[..open].trim().to_string();
+            let mut p = Parser {
+                s: &body.as_bytes()[open..],
+                pos: 0,
+            };
+            let Param::List(params) = p.param(0)? else {
+                return Err(step_err(format!("#{id}: parameters are not a list")));
+            };
+            p.skip_ws();
+            if p.pos != p.s.len() {
+                return Err(step_err(format!("#{id}: text after the parameters")));
+            }
+            (name, params)
         };
-        let Param::List(params) = p.param()? else {
-            return Err(step_err(format!("#{id}: parameters are not a list")));
-        };
-        if entities.insert(id, (name, params)).is_some() {
+        if entities.insert(id, entry).is_some() {
             return Err(step_err(format!("duplicate entity #{id}")));
         }
     }
-    let (_, params) = entities
-        .values()
-        .find(|(n, _)| n == "B_SPLINE_SURFACE_WITH_KNOTS")
-        .ok_or_else(|| step_err("no B_SPLINE_SURFACE_WITH_KNOTS"))?;
-    let bad = || step_err("malformed B_SPLINE_SURFACE_WITH_KNOTS");
-    if params.len() != 13 {
-        return Err(bad());
+    if !ended {
+        return Err(step_err("the DATA section has no ENDSEC"));
     }
-    let int = |p: &Param| match p {
-        Param::Num(x) if *x >= 0.0 && x.fract() == 0.0 => Ok(*x as usize),
-        _ => Err(bad()),
+    if !it.any(|s| s == "END-ISO-10303-21") {
+        return Err(step_err("no END-ISO-10303-21"));
+    }
+    Ok(entities)
+}
+
+/// Reads every `B_SPLINE_SURFACE_WITH_KNOTS` of a STEP (ISO 10303-21) file, in entity-id order
+/// (non-rational, explicit knots; other entities are checked for syntax only).
+///
+/// The reader takes any well-formed Part 21 text: LF or CRLF line ends, whitespace anywhere
+/// between tokens, comments, strings with `''` escapes, typed parameters, `$` and `*`, complex
+/// instances. It never panics, nests at most 32 lists deep and allocates in proportion to the
+/// file: every count read from the file (multiplicities, degrees) is checked against the data
+/// actually present before anything is reserved.
+///
+/// # Errors
+/// [`PdeError::Step`] for a syntax error, a missing section or reference, no surface, or a
+/// malformed surface (with its entity id); the errors of [`BSplineSurface::validate`].
+pub fn read_step(text: &str) -> Result<Vec<BSplineSurface>, PdeError> {
+    let entities = data_entities(text)?;
+    let surfaces: Vec<BSplineSurface> = entities
+        .iter()
+        .filter(|(_, (name, _))| name == "B_SPLINE_SURFACE_WITH_KNOTS")
+        .map(|(&id, (_, params))| surface_of(&entities, id, params))
+        .collect::<Result<_, _>>()?;
+    if surfaces.is_empty() {
+        return Err(step_err("no B_SPLINE_SURFACE_WITH_KNOTS"));
+    }
+    Ok(surfaces)
+}
+
+fn surface_of(
+    entities: &Entities,
+    id: usize,
+    params: &[Param],
+) -> Result<BSplineSurface, PdeError> {
+    let bad = |what: &str| step_err(format!("#{id}: {what}"));
+    if params.len() != 13 {
+        return Err(bad("B_SPLINE_SURFACE_WITH_KNOTS needs 13 parameters"));
+    }
+    let degree = |p: &Param| match p {
+        Param::Num(x) if *x >= 1.0 && *x <= bez_core::MAX_DEGREE as f64 && x.fract() == 0.0 => {
+            Ok(*x as usize)
+        }
+        _ => Err(bad(&format!(
+            "a degree must be an integer in 1..={}",
+            bez_core::MAX_DEGREE
+        ))),
     };
     let nums = |p: &Param| -> Result<Vec<f64>, PdeError> {
         match p {
@@ -336,68 +475,78 @@ pub fn read_step(text: &str) -> Result<BSplineSurface, PdeError> {
                 .iter()
                 .map(|i| match i {
                     Param::Num(x) => Ok(*x),
-                    _ => Err(bad()),
+                    _ => Err(bad("expected a list of numbers")),
                 })
                 .collect(),
-            _ => Err(bad()),
+            _ => Err(bad("expected a list of numbers")),
         }
     };
-    let point = |id: usize| -> Result<Vector3, PdeError> {
-        match entities.get(&id) {
-            Some((n, p)) if n == "CARTESIAN_POINT" && p.len() == 2 => {
-                let c = nums(&p[1])?;
-                if c.len() == 3 {
-                    Ok(Vector3::new(c[0], c[1], c[2]))
-                } else {
-                    Err(bad())
-                }
-            }
-            _ => Err(step_err(format!("#{id} is not a 3D CARTESIAN_POINT"))),
+    let point = |pid: usize| -> Result<Vector3, PdeError> {
+        match entities.get(&pid) {
+            Some((n, p)) if n == "CARTESIAN_POINT" && p.len() == 2 => match nums(&p[1])?[..] {
+                [x, y, z] => Ok(Vector3::new(x, y, z)),
+                _ => Err(bad(&format!("#{pid} is not a 3D point"))),
+            },
+            _ => Err(bad(&format!("#{pid} is not a CARTESIAN_POINT"))),
         }
     };
-    let degree_u = int(&params[1])?;
-    let degree_v = int(&params[2])?;
+    let degree_u = degree(&params[1])?;
+    let degree_v = degree(&params[2])?;
     let Param::List(rows) = &params[3] else {
-        return Err(bad());
+        return Err(bad("the control grid is not a list"));
     };
     let mut points = Vec::new();
     let mut width = None;
     for row in rows {
         let Param::List(ids) = row else {
-            return Err(bad());
+            return Err(bad("a control grid row is not a list"));
         };
         if *width.get_or_insert(ids.len()) != ids.len() {
-            return Err(step_err("ragged control grid"));
+            return Err(bad("ragged control grid"));
         }
-        for id in ids {
-            let Param::Ref(id) = id else {
-                return Err(bad());
+        for pid in ids {
+            let Param::Ref(pid) = pid else {
+                return Err(bad("a control point is not a reference"));
             };
-            points.push(point(*id)?);
+            points.push(point(*pid)?);
         }
     }
-    let expand = |mults: &Param, knots: &Param| -> Result<Vec<f64>, PdeError> {
+    // Knot vectors from (multiplicity, value) pairs. The multiplicities are checked (integers
+    // in 1..=degree+1 summing to count + degree + 1) before the vector is built, so a file
+    // cannot ask for more memory than the surface it describes.
+    let expand = |mults: &Param, knots: &Param, degree: usize, count: usize| {
         let m = nums(mults)?;
         let k = nums(knots)?;
         if m.len() != k.len() {
-            return Err(bad());
+            return Err(bad("multiplicities and knots differ in number"));
         }
-        let mut out = Vec::new();
+        let mut total = 0usize;
+        for &mult in &m {
+            if !(mult >= 1.0 && mult <= (degree + 1) as f64 && mult.fract() == 0.0) {
+                return Err(bad(&format!(
+                    "knot multiplicity {mult} outside 1..={}",
+                    degree + 1
+                )));
+            }
+            total += mult as usize;
+        }
+        if total != count + degree + 1 {
+            return Err(bad("knot count does not match the control grid and degree"));
+        }
+        let mut out = Vec::with_capacity(total);
         for (mult, knot) in m.iter().zip(k) {
-            out.extend(std::iter::repeat_n(knot, *mult as usize));
+            out.extend(core::iter::repeat_n(knot, *mult as usize));
         }
         Ok(out)
     };
+    let width = width.unwrap_or(0);
     let surface = BSplineSurface {
         degree_u,
         degree_v,
-        knots_u: expand(&params[8], &params[10])?,
-        knots_v: expand(&params[9], &params[11])?,
+        knots_u: expand(&params[8], &params[10], degree_u, rows.len())?,
+        knots_v: expand(&params[9], &params[11], degree_v, width)?,
         points,
     };
-    if surface.count_u() != rows.len() || Some(surface.count_v()) != width {
-        return Err(step_err("knot counts do not match the control grid"));
-    }
     surface.validate()?;
     Ok(surface)
 }

@@ -4,7 +4,23 @@
 
 use bez_core::Vector3;
 use pde_bezier::cases;
-use pde_bezier::{BSplineSurface, Method, PdeError, read_step, solve, write_step};
+use pde_bezier::{
+    BSplineSurface, Method, PdeError, read_iges, read_step, solve, write_iges, write_step,
+};
+
+/// The STEP text of `s` (written into a byte buffer).
+fn step_string(s: &BSplineSurface, name: &str) -> Result<String, PdeError> {
+    let mut out = Vec::new();
+    write_step(s, name, &mut out)?;
+    Ok(String::from_utf8(out).unwrap())
+}
+
+/// The IGES text of `s`.
+fn iges_string(s: &BSplineSurface, name: &str) -> Result<String, PdeError> {
+    let mut out = Vec::new();
+    write_iges(s, name, &mut out)?;
+    Ok(String::from_utf8(out).unwrap())
+}
 
 fn solutions() -> Vec<pde_bezier::Solution> {
     let mut cs = vec![cases::enneper(2, 3, 2).unwrap(), cases::vase(2, 4).unwrap()];
@@ -36,7 +52,7 @@ fn spline_form_equals_patch_grid() {
 #[test]
 fn step_round_trips_exactly() {
     for sol in solutions() {
-        let text = write_step(&sol.spline, "pde surface").unwrap();
+        let text = step_string(&sol.spline, "pde surface").unwrap();
         assert!(text.starts_with("ISO-10303-21;"));
         assert!(text.contains("B_SPLINE_SURFACE_WITH_KNOTS"));
         assert!(text.contains("SHAPE_DEFINITION_REPRESENTATION"));
@@ -48,9 +64,9 @@ fn step_round_trips_exactly() {
             );
         }
         let back = read_step(&text).unwrap();
-        assert_eq!(back, sol.spline);
+        assert_eq!(back, std::slice::from_ref(&sol.spline));
         for (u, v) in [(0.1, 0.7), (0.55, 0.2), (1.0, 1.0)] {
-            let d = back.eval(u, v).unwrap() - sol.surface.eval(u, v).unwrap();
+            let d = back[0].eval(u, v).unwrap() - sol.surface.eval(u, v).unwrap();
             assert!(d.norm() < 1e-11);
         }
     }
@@ -71,21 +87,21 @@ fn step_rejects_bad_input() {
         ],
     };
     assert!(matches!(
-        write_step(&s, "x"),
+        step_string(&s, "x"),
         Err(PdeError::NonFinite { .. })
     ));
     let short = BSplineSurface {
         points: vec![Vector3::zeros(); 3],
         ..s.clone()
     };
-    assert!(matches!(write_step(&short, "x"), Err(PdeError::Core(_))));
+    assert!(matches!(step_string(&short, "x"), Err(PdeError::Core(_))));
     let decreasing = BSplineSurface {
         knots_v: vec![0.0, 0.5, 0.2, 1.0],
         points: vec![Vector3::zeros(); 4],
         ..s.clone()
     };
     assert_eq!(
-        write_step(&decreasing, "x"),
+        step_string(&decreasing, "x"),
         Err(PdeError::DecreasingKnots {
             direction: "v",
             index: 2
@@ -95,7 +111,7 @@ fn step_rejects_bad_input() {
         points: vec![Vector3::zeros(); 4],
         ..s
     };
-    let text = write_step(&good, "x").unwrap();
+    let text = step_string(&good, "x").unwrap();
     read_step(&text).unwrap();
     // A real without a decimal point, a missing point entity, truncation.
     let broken = text.replacen("0.0000000000000000E0", "1E-7", 1);
@@ -117,22 +133,22 @@ fn step_rejects_bad_input() {
 #[test]
 fn iges_round_trips_exactly() {
     for sol in solutions() {
-        let text = pde_bezier::write_iges(&sol.spline, "pde surface").unwrap();
+        let text = iges_string(&sol.spline, "pde surface").unwrap();
         for line in text.lines() {
             assert_eq!(line.len(), 80, "{line}");
         }
         assert!(text.lines().last().unwrap().starts_with("S      1G"));
-        let back = pde_bezier::read_iges(&text).unwrap();
-        assert_eq!(back, sol.spline);
+        let back = read_iges(&text).unwrap();
+        assert_eq!(back, std::slice::from_ref(&sol.spline));
     }
 }
 
 #[test]
 fn iges_rejects_bad_input() {
     let sol = &solutions()[0];
-    let text = pde_bezier::write_iges(&sol.spline, "x").unwrap();
+    let text = iges_string(&sol.spline, "x").unwrap();
     assert!(matches!(
-        pde_bezier::read_iges("short line\n"),
+        read_iges("short line\n"),
         Err(PdeError::Iges { .. })
     ));
     let no_t: String = text
@@ -140,20 +156,14 @@ fn iges_rejects_bad_input() {
         .filter(|l| l.as_bytes()[72] != b'T')
         .map(|l| format!("{l}\n"))
         .collect();
-    assert!(matches!(
-        pde_bezier::read_iges(&no_t),
-        Err(PdeError::Iges { .. })
-    ));
+    assert!(matches!(read_iges(&no_t), Err(PdeError::Iges { .. })));
     let truncated: String = text
         .lines()
         .enumerate()
         .filter(|(i, l)| l.as_bytes()[72] != b'P' || *i < 8)
         .map(|(_, l)| format!("{l}\n"))
         .collect();
-    assert!(matches!(
-        pde_bezier::read_iges(&truncated),
-        Err(PdeError::Iges { .. })
-    ));
+    assert!(matches!(read_iges(&truncated), Err(PdeError::Iges { .. })));
 }
 
 mod fuzz {
@@ -168,10 +178,7 @@ mod fuzz {
             knots_v: vec![0.0, 0.0, 1.0, 1.0],
             points: (0..6).map(|i| Vector3::new(i as f64, 0.5, -1.0)).collect(),
         };
-        (
-            write_step(&s, "f").unwrap(),
-            pde_bezier::write_iges(&s, "f").unwrap(),
-        )
+        (step_string(&s, "f").unwrap(), iges_string(&s, "f").unwrap())
     }
 
     proptest! {
@@ -180,18 +187,18 @@ mod fuzz {
         #[test]
         fn readers_never_panic(junk in ".{0,200}", cut in 0usize..4000, byte in 0u8..128) {
             let _ = read_step(&junk);
-            let _ = pde_bezier::read_iges(&junk);
+            let _ = read_iges(&junk);
             let (step, iges) = sample_texts();
             for text in [step, iges] {
                 let cut = cut.min(text.len());
                 let _ = read_step(&text[..cut]);
-                let _ = pde_bezier::read_iges(&text[..cut]);
+                let _ = read_iges(&text[..cut]);
                 let mut bytes = text.into_bytes();
                 let at = cut.min(bytes.len() - 1);
                 bytes[at] = byte;
                 let mutated = String::from_utf8_lossy(&bytes).into_owned();
                 let _ = read_step(&mutated);
-                let _ = pde_bezier::read_iges(&mutated);
+                let _ = read_iges(&mutated);
             }
         }
     }

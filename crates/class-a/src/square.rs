@@ -192,7 +192,7 @@ impl Matrix<3> {
             + m[0][2] * (m[1][0] * m[2][1] - m[1][1] * m[2][0])
     }
 
-    /// [k]ₓ, the matrix of v ↦ k × v.
+    /// The cross-product matrix \[k\]ₓ of v ↦ k × v.
     #[must_use]
     pub fn cross_matrix(k: &Vector<3>) -> Self {
         let (x, y, z) = (k[0], k[1], k[2]);

@@ -1,0 +1,16 @@
+//! The STEP reader on arbitrary bytes: never a panic, an unbounded recursion or a huge
+//! allocation (libFuzzer's -rss_limit_mb catches the last).
+#![no_main]
+
+use libfuzzer_sys::fuzz_target;
+
+fuzz_target!(|data: &[u8]| {
+    if let Ok(text) = std::str::from_utf8(data) {
+        if let Ok(surfaces) = pde_bezier::read_step(text) {
+            for s in surfaces {
+                assert!(s.validate().is_ok());
+                let _ = s.eval(0.5, 0.5);
+            }
+        }
+    }
+});

@@ -37,7 +37,7 @@ fn main() -> Result<(), ClassAError> {
         certificate.verdict,
         certificate.is_monotone()
     );
-    let graph = log_graph(&curvature_samples(&curve, 200))?;
+    let graph = log_graph(&curvature_samples(&curve, 200)?)?;
     println!(
         "log curvature graph: slope {:.4}, straightness {:.2e}",
         graph.slope, graph.straightness

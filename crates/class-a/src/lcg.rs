@@ -134,20 +134,43 @@ pub fn log_graph_from_points(points: Vec<(f64, f64)>) -> Result<LogGraph, ClassA
     })
 }
 
-/// Curvature samples (κ, dκ/ds) at `count` uniform parameters (skipping failures).
-#[must_use]
-pub fn curvature_samples<const D: usize>(curve: &BezierCurve<D>, count: usize) -> Vec<(f64, f64)> {
-    let count = count.max(2);
-    (0..count)
+/// Curvature samples (κ, dκ/ds) at `count` uniform parameters (at least 2; parameters where
+/// the curvature is undefined are skipped).
+///
+/// # Errors
+/// `CoreError::TooLarge` when `count` exceeds [`bez_core::MAX_SAMPLES`] (checked first).
+pub fn curvature_samples<const D: usize>(
+    curve: &BezierCurve<D>,
+    count: usize,
+) -> Result<Vec<(f64, f64)>, ClassAError> {
+    let count = checked_count(count)?;
+    Ok((0..count)
         .filter_map(|i| curvature_with_derivative(curve, i as f64 / (count - 1) as f64).ok())
-        .collect()
+        .collect())
 }
 
-/// Torsion samples (τ, dτ/ds) at `count` uniform parameters (skipping failures).
-#[must_use]
-pub fn torsion_samples(curve: &BezierCurve<3>, count: usize) -> Vec<(f64, f64)> {
-    let count = count.max(2);
-    (0..count)
+/// Torsion samples (τ, dτ/ds) at `count` uniform parameters, as [`curvature_samples`].
+///
+/// # Errors
+/// As [`curvature_samples`].
+pub fn torsion_samples(
+    curve: &BezierCurve<3>,
+    count: usize,
+) -> Result<Vec<(f64, f64)>, ClassAError> {
+    let count = checked_count(count)?;
+    Ok((0..count)
         .filter_map(|i| torsion_with_derivative(curve, i as f64 / (count - 1) as f64).ok())
-        .collect()
+        .collect())
+}
+
+/// `count` raised to 2, or `TooLarge` above [`bez_core::MAX_SAMPLES`].
+fn checked_count(count: usize) -> Result<usize, ClassAError> {
+    if count > bez_core::MAX_SAMPLES {
+        return Err(bez_core::CoreError::TooLarge {
+            requested: count,
+            max: bez_core::MAX_SAMPLES,
+        }
+        .into());
+    }
+    Ok(count.max(2))
 }

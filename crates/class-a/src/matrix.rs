@@ -62,7 +62,8 @@ impl ClassAReport {
     /// The report of a 2×2 matrix.
     ///
     /// # Errors
-    /// [`ClassAError::NonFinite`] if an entry is NaN or infinite.
+    /// [`ClassAError::NonFinite`] if an entry is NaN or infinite,
+    /// [`ClassAError::InvalidParameter`] if one is outside ±`bez_core::MAX_COORDINATE`.
     pub fn of_2x2(m: &Matrix2) -> Result<Self, ClassAError> {
         Self::of_matrix(m)
     }
@@ -70,7 +71,8 @@ impl ClassAReport {
     /// The report of a 3×3 matrix.
     ///
     /// # Errors
-    /// [`ClassAError::NonFinite`] if an entry is NaN or infinite.
+    /// [`ClassAError::NonFinite`] if an entry is NaN or infinite,
+    /// [`ClassAError::InvalidParameter`] if one is outside ±`bez_core::MAX_COORDINATE`.
     pub fn of_3x3(m: &Matrix3) -> Result<Self, ClassAError> {
         Self::of_matrix(m)
     }
@@ -78,7 +80,8 @@ impl ClassAReport {
     /// The report of a D × D matrix.
     ///
     /// # Errors
-    /// [`ClassAError::NonFinite`] if an entry is NaN or infinite.
+    /// [`ClassAError::NonFinite`] if an entry is NaN or infinite,
+    /// [`ClassAError::InvalidParameter`] if one is outside ±`bez_core::MAX_COORDINATE`.
     pub fn of_matrix<const D: usize>(m: &Matrix<D>) -> Result<Self, ClassAError> {
         check_finite(m.iter())?;
         let sym_min = |a: &Matrix<D>| {
@@ -90,11 +93,17 @@ impl ClassAReport {
     }
 }
 
+/// Entries finite and within ±`bez_core::MAX_COORDINATE`, so that σ² and the margins stay
+/// finite.
 fn check_finite<'a>(mut it: impl Iterator<Item = &'a f64>) -> Result<(), ClassAError> {
-    if it.all(|x| x.is_finite()) {
-        Ok(())
-    } else {
-        Err(ClassAError::NonFinite { name: "matrix" })
+    match it.find(|x| !x.is_finite() || x.abs() > bez_core::MAX_COORDINATE) {
+        None => Ok(()),
+        Some(x) if !x.is_finite() => Err(ClassAError::NonFinite { name: "matrix" }),
+        Some(&value) => Err(ClassAError::InvalidParameter {
+            name: "matrix entry",
+            value,
+            expected: "within ±1e152 (bez_core::MAX_COORDINATE)",
+        }),
     }
 }
 

@@ -8,10 +8,11 @@ use crate::ClassAError;
 /// ρ = b₀ + Δb₀ / (1 − s e^{iθ}) in complex notation (NOTES).
 ///
 /// Erratum: the printed eq. (19) assumes |Δb₀| = 1 and has the wrong sign of the u_x sin θ term
-/// of ρ_y; [`printed_pole_eq19`] keeps the printed form for comparison.
+/// of ρ_y; `printed_pole_eq19` (`paper` feature) keeps the printed form for comparison.
 ///
 /// # Errors
-/// [`ClassAError::NoPole`] if s e^{iθ} = 1, [`ClassAError::NonFinite`] for non-finite input.
+/// [`ClassAError::NoPole`] if s e^{iθ} = 1 (or the pole is not representable),
+/// [`ClassAError::NonFinite`] for non-finite input.
 pub fn log_spiral_pole(
     b0: &Vector2,
     delta_b0: &Vector2,
@@ -32,7 +33,13 @@ pub fn log_spiral_pole(
     }
     // Δb₀ / (1 − z) = Δb₀ · conj(1 − z) / |1 − z|².
     let (x, y) = (delta_b0.x(), delta_b0.y());
-    Ok(b0 + Vector2::new(x * zr + y * zi, y * zr - x * zi) / den)
+    let pole = b0 + Vector2::new(x * zr + y * zi, y * zr - x * zi) / den;
+    if pole.is_finite() {
+        Ok(pole)
+    } else {
+        // s e^{iθ} within rounding of 1, or inputs so large that the pole is not representable.
+        Err(ClassAError::NoPole { s, theta })
+    }
 }
 
 /// The pole as printed in eq. (19) (with unit Δb₀ = μ): kept to document the sign erratum.
@@ -73,8 +80,8 @@ pub fn spiral_deviation(points: &[Vector2], pole: &Vector2, s: f64, theta: f64) 
 /// kᵢ = (|bᵢ₊₁|² − s²|bᵢ|²)/(1 − s²); lᵢ: 2q·(cᵢ₊₁ − cᵢ) = kᵢ₊₁ − kᵢ.
 ///
 /// # Errors
-/// [`ClassAError::NoPole`] when s = 1 (the circles degenerate to lines) or the radical axes are
-/// parallel; [`ClassAError::NonFinite`] for non-finite points.
+/// [`ClassAError::NoPole`] when s = 1 (the circles degenerate to lines), the radical axes are
+/// parallel or the pole is not representable; [`ClassAError::NonFinite`] for non-finite points.
 pub fn apollonius_pole(b: &[Vector2; 4]) -> Result<Vector2, ClassAError> {
     if !b.iter().all(|p| p.x().is_finite() && p.y().is_finite()) {
         return Err(ClassAError::NonFinite {
@@ -87,6 +94,10 @@ pub fn apollonius_pole(b: &[Vector2; 4]) -> Result<Vector2, ClassAError> {
     if !s.is_finite() || (1.0 - s2).abs() < 1e-12 {
         return Err(ClassAError::NoPole { s, theta: f64::NAN });
     }
+    // The construction is similarity invariant: work on (bᵢ − b₀)/|b₁ − b₀| so that the squared
+    // norms below stay finite whatever the size and position of the points.
+    let (origin, unit) = (b[0], l0);
+    let b: [Vector2; 4] = core::array::from_fn(|i| (b[i] - origin) / unit);
     let circle = |i: usize| {
         let c = (b[i + 1] - b[i] * s2) / (1.0 - s2);
         let k = (b[i + 1].norm_squared() - s2 * b[i].norm_squared()) / (1.0 - s2);
@@ -101,8 +112,14 @@ pub fn apollonius_pole(b: &[Vector2; 4]) -> Result<Vector2, ClassAError> {
     if det == 0.0 || !det.is_finite() {
         return Err(ClassAError::NoPole { s, theta: f64::NAN });
     }
-    Ok(Vector2::new(
+    let pole = Vector2::new(
         (r0 * n1.y() - r1 * n0.y()) / det,
         (n0.x() * r1 - n1.x() * r0) / det,
-    ))
+    ) * unit
+        + origin;
+    if pole.is_finite() {
+        Ok(pole)
+    } else {
+        Err(ClassAError::NoPole { s, theta: f64::NAN })
+    }
 }

@@ -216,10 +216,18 @@ fn degree_30_spatial_typical() {
     let t = TypicalSpatial::from_points(&cases::fig8_points(), 30).unwrap();
     let c = t.curve().unwrap();
     let kc = curvature_certificate(&c).unwrap();
-    let ks: Vec<f64> = curvature_samples(&c, 1500).iter().map(|x| x.0).collect();
+    let ks: Vec<f64> = curvature_samples(&c, 1500)
+        .unwrap()
+        .iter()
+        .map(|x| x.0)
+        .collect();
     agrees_with_samples(kc.verdict, &ks);
     let tc = torsion_certificate(&c).unwrap();
-    let ts: Vec<f64> = torsion_samples(&c, 1500).iter().map(|x| x.0).collect();
+    let ts: Vec<f64> = torsion_samples(&c, 1500)
+        .unwrap()
+        .iter()
+        .map(|x| x.0)
+        .collect();
     agrees_with_samples(tc.verdict, &ts);
 }
 

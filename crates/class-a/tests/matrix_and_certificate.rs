@@ -124,7 +124,7 @@ fn helix_like_spatial_typical_has_constant_torsion_sign() {
     let m = rotation(&Vector3::new(0.0, 0.0, 1.0), 0.3) * 1.15;
     let c = class_a_curve(&Vector3::zeros(), &Vector3::new(1.0, 0.0, 0.4), &m, 7).unwrap();
     let cert = torsion_certificate(&c).unwrap();
-    let samples = torsion_samples(&c, 400);
+    let samples = torsion_samples(&c, 400).unwrap();
     let incr = samples.windows(2).all(|w| w[1].0 >= w[0].0 - 1e-12);
     let decr = samples.windows(2).all(|w| w[1].0 <= w[0].0 + 1e-12);
     assert_eq!(cert.is_monotone(), incr || decr, "{:?}", cert.verdict);

@@ -283,7 +283,7 @@ fn row2(
     c: &BezierCurve<2>,
     r: &ClassAReport,
 ) -> Result<(), DynError> {
-    let lcg = log_graph(&curvature_samples(c, 201))?;
+    let lcg = log_graph(&curvature_samples(c, 201)?)?;
     let k = verdict(curvature_certificate(c));
     writeln!(
         md,
@@ -306,8 +306,8 @@ fn row3(
     c: &BezierCurve<3>,
     r: &ClassAReport,
 ) -> Result<(), DynError> {
-    let lcg = log_graph(&curvature_samples(c, 201))?;
-    let ltg = log_graph(&torsion_samples(c, 201))?;
+    let lcg = log_graph(&curvature_samples(c, 201)?)?;
+    let ltg = log_graph(&torsion_samples(c, 201)?)?;
     let k = verdict(curvature_certificate(c));
     let t = verdict(torsion_certificate(c));
     writeln!(
@@ -367,7 +367,7 @@ fn write_set<const D: usize>(
             .with(Series::new("κ(t)", k, Style::Line))
             .write_svg(&dir.join(format!("{stem}-curvature.svg")))?,
     );
-    let lcg = log_graph(&curvature_samples(c, 201))?;
+    let lcg = log_graph(&curvature_samples(c, 201)?)?;
     out.push(
         Plot::new(
             format!("{title}: LCG, slope {:.3}", lcg.slope),
@@ -386,7 +386,7 @@ fn write_set<const D: usize>(
                 .with(Series::new("τ(t)", tau, Style::Line))
                 .write_svg(&dir.join(format!("{stem}-torsion.svg")))?,
         );
-        let ltg = log_graph(&torsion_samples(c3, 201))?;
+        let ltg = log_graph(&torsion_samples(c3, 201)?)?;
         out.push(
             Plot::new(
                 format!("{title}: LTG, slope {:.3}", ltg.slope),

@@ -1,0 +1,128 @@
+//! Random (including NaN, infinite, huge and out-of-contract) inputs to class-a's public
+//! functions and methods give `Result`s, never panics, and an `Ok` never holds a NaN or an
+//! infinity.
+#![allow(
+    clippy::unwrap_used,
+    clippy::expect_used,
+    reason = "tests fail loudly on unexpected errors"
+)]
+
+use bez_core::{BezierCurve, Vector2, Vector3};
+use class_a::{
+    ClassAReport, Matrix2, Matrix3, TypicalPlanar, TypicalSpatial, apollonius_pole, class_a_curve,
+    curvature_certificate, curvature_samples, log_graph, log_spiral_pole, perturb2,
+    planar_feasibility, rotation, solve_scale, spiral_deviation, torsion_certificate,
+    torsion_samples,
+};
+use proptest::prelude::*;
+
+fn wild() -> impl Strategy<Value = f64> {
+    prop_oneof![
+        8 => -3.0..3.0f64,
+        1 => Just(f64::NAN),
+        1 => Just(f64::INFINITY),
+        1 => Just(-1e300),
+        1 => Just(1e-300),
+        1 => Just(0.0),
+        1 => Just(1.0),
+    ]
+}
+
+fn degree() -> impl Strategy<Value = usize> {
+    prop_oneof![
+        8 => 0usize..12,
+        1 => Just(class_a::MAX_DEGREE + 1),
+        1 => Just(1usize << 40),
+        1 => Just(usize::MAX),
+    ]
+}
+
+fn v2() -> impl Strategy<Value = Vector2> {
+    (wild(), wild()).prop_map(|(x, y)| Vector2::new(x, y))
+}
+
+fn v3() -> impl Strategy<Value = Vector3> {
+    (wild(), wild(), wild()).prop_map(|(x, y, z)| Vector3::new(x, y, z))
+}
+
+fn finite_curve<const D: usize>(c: &BezierCurve<D>) -> bool {
+    c.points().iter().all(|p| p.is_finite())
+}
+
+proptest! {
+    #![proptest_config(ProptestConfig::with_cases(200))]
+
+    #[test]
+    fn planar(a0 in v2(), a1 in v2(), a2 in v2(), n in degree(), s in wild(), th in wild(), t in wild()) {
+        let _ = solve_scale(th, s, n.min(64));
+        if let Ok(f) = planar_feasibility(&a0, &a1, &a2, n) {
+            let _ = f.is_feasible();
+        }
+        if let Ok(tp) = TypicalPlanar::from_points(&a0, &a1, &a2, n) {
+            prop_assert!(tp.s().is_finite() && tp.theta().is_finite() && tp.length().is_finite());
+            if let Ok(c) = tp.curve() { prop_assert!(finite_curve(&c)); }
+            let _ = tp.margin();
+            let _ = tp.log_curvature_point(t);
+        }
+        if let Ok((_, c, _)) = TypicalPlanar::generate(&a0, &a1, &a2, n, 1e-9) {
+            prop_assert!(finite_curve(&c));
+        }
+        if let Ok(tp) = TypicalPlanar::new(a0, a1, s, s, th, n)
+            && let Ok(c) = tp.curve()
+        {
+            prop_assert!(finite_curve(&c));
+        }
+        let m = Matrix2::new(s, -th, th, s);
+        if let Ok(c) = class_a_curve(&a0, &a1, &m, n) {
+            prop_assert!(finite_curve(&c));
+            if let Ok(cert) = curvature_certificate(&c) { let _ = cert.is_monotone(); }
+            if let Ok(samples) = curvature_samples(&c, 17) {
+                prop_assert!(samples.iter().all(|(k, d)| k.is_finite() && d.is_finite()));
+                if let Ok(g) = log_graph(&samples) { prop_assert!(g.slope.is_finite()); }
+            }
+        }
+        if let Ok(r) = ClassAReport::of_2x2(&perturb2(&m, [t, 0.0, 0.0, t])) {
+            for c in [r.farin3, r.singular_values, r.farin4, r.subcurve_farin4] {
+                prop_assert!(c.margin.is_finite(), "{r:?}");
+            }
+        }
+        if let Ok(p) = log_spiral_pole(&a0, &a1, s, th) {
+            prop_assert!(p.is_finite());
+            let _ = spiral_deviation(&[a0, a1, a2], &p, s, th);
+        }
+        if let Ok(p) = apollonius_pole(&[a0, a1, a2, a0 + a1]) { prop_assert!(p.is_finite()); }
+    }
+
+    #[test]
+    fn spatial(a in [v3(), v3(), v3(), v3()], n in degree(), s in wild(), th in wild()) {
+        if let Ok(ts) = TypicalSpatial::from_points(&a, n)
+            && let Ok(c) = ts.curve()
+        {
+            prop_assert!(finite_curve(&c));
+            if let Ok(cert) = torsion_certificate(&c) { let _ = cert.is_monotone(); }
+            if let Ok(samples) = torsion_samples(&c, 9) {
+                prop_assert!(samples.iter().all(|(k, d)| k.is_finite() && d.is_finite()));
+            }
+        }
+        let _ = TypicalSpatial::candidates(&a, n);
+        let m = rotation(&a[0], th) * s;
+        if let Ok(c) = class_a_curve(&a[1], &a[2], &m, n) {
+            prop_assert!(finite_curve(&c));
+        }
+        let _ = ClassAReport::of_3x3(&m);
+        let _ = Matrix3::identity().singular_values();
+    }
+}
+
+#[test]
+fn sample_counts_above_the_limit_are_errors() {
+    let c = class_a_curve(
+        &Vector2::new(0.0, 0.0),
+        &Vector2::new(1.0, 0.0),
+        &Matrix2::new(1.1, -0.1, 0.1, 1.1),
+        4,
+    )
+    .unwrap();
+    assert!(curvature_samples(&c, usize::MAX).is_err());
+    assert_eq!(curvature_samples(&c, 0).unwrap().len(), 2);
+}

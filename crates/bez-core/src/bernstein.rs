@@ -1,5 +1,6 @@
 //! The Bernstein basis B_{i,n}(t) = C(n, i) tⁱ (1 − t)ⁿ⁻ⁱ and scalar polynomials in Bernstein form.
 
+use crate::CoreError;
 use crate::casteljau::{de_casteljau_in_place, elevate_slice};
 use crate::math;
 use alloc::vec;
@@ -315,8 +316,10 @@ fn ln_binomial_row(n: usize) -> Vec<f64> {
 }
 
 /// Bernstein coefficients of the same polynomial written in degree n + r (degree elevation).
-#[must_use]
-pub fn bernstein_elevate(coeffs: &[f64], r: usize) -> Vec<f64> {
+///
+/// # Errors
+/// As [`elevate_slice`](crate::elevate_slice).
+pub fn bernstein_elevate(coeffs: &[f64], r: usize) -> Result<Vec<f64>, CoreError> {
     elevate_slice(coeffs, r)
 }
 

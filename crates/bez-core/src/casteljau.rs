@@ -148,8 +148,23 @@ pub fn de_casteljau_split_array<T: ControlPoint, const N: usize>(
 ///
 /// One step: Qᵢ = i/(n+1) Pᵢ₋₁ + (1 − i/(n+1)) Pᵢ, a convex combination, repeated r times
 /// (cost O(r (n + r))). An empty slice stays empty.
-#[must_use]
-pub fn elevate_slice<T: ControlPoint>(points: &[T], r: usize) -> Vec<T> {
+///
+/// # Errors
+/// [`CoreError::DegreeTooHigh`] when n + r exceeds [`MAX_DEGREE`](crate::MAX_DEGREE)
+/// (checked before any work).
+pub fn elevate_slice<T: ControlPoint>(points: &[T], r: usize) -> Result<Vec<T>, CoreError> {
+    let degree = points.len().saturating_sub(1).saturating_add(r);
+    if degree > crate::MAX_DEGREE {
+        return Err(CoreError::DegreeTooHigh {
+            max: crate::MAX_DEGREE,
+            degree,
+        });
+    }
+    Ok(elevate_unchecked(points, r))
+}
+
+/// [`elevate_slice`] for an r already checked.
+pub(crate) fn elevate_unchecked<T: ControlPoint>(points: &[T], r: usize) -> Vec<T> {
     let mut cur = points.to_vec();
     if cur.is_empty() {
         return cur;

@@ -171,3 +171,71 @@ pub fn check_bezier_form<const D: usize, C: BezierForm<D> + ?Sized>(
     }
     Ok(())
 }
+
+/// The names a crate re-exports (`pub use crate::…::{A, B};` in `lib_rs`, its `src/lib.rs`
+/// text, leaving out those under a `#[cfg(feature = "paper")]`) that do not occur as a word
+/// in `suite` (the text of the crate's adversarial test): the items that test forgot. A crate's
+/// suite asserts that this list is empty, so a new public item fails the build of its tests
+/// until it joins the suite.
+#[must_use]
+pub fn missing_from_suite(lib_rs: &str, suite: &str) -> Vec<String> {
+    let mut names = Vec::new();
+    let mut paper_only = false;
+    let mut statement = String::new();
+    for line in lib_rs.lines().map(str::trim) {
+        if statement.is_empty() {
+            if line.starts_with("#[cfg(feature = \"paper\")]") {
+                paper_only = true;
+                continue;
+            }
+            if !line.starts_with("pub use crate::") {
+                paper_only &= line.starts_with("#[");
+                continue;
+            }
+        }
+        statement.push_str(line);
+        statement.push(' ');
+        if !line.ends_with(';') {
+            continue;
+        }
+        if !paper_only {
+            let body = statement.trim().trim_end_matches(';');
+            let list = match (body.find('{'), body.rfind('}')) {
+                (Some(a), Some(b)) if a < b => &body[a + 1..b],
+                _ => body.rsplit("::").next().unwrap_or(""),
+            };
+            names.extend(
+                list.split(',')
+                    .map(|n| n.trim().rsplit("::").next().unwrap_or("").trim())
+                    .filter(|n| !n.is_empty())
+                    .map(str::to_string),
+            );
+        }
+        statement.clear();
+        paper_only = false;
+    }
+    let is_word = |c: char| c.is_alphanumeric() || c == '_';
+    names
+        .into_iter()
+        .filter(|name| {
+            !suite.match_indices(name.as_str()).any(|(i, _)| {
+                let before = suite[..i].chars().next_back();
+                let after = suite[i + name.len()..].chars().next();
+                !before.is_some_and(is_word) && !after.is_some_and(is_word)
+            })
+        })
+        .collect()
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn finds_re_exports_missing_from_a_suite() {
+        let lib = "mod a;\npub use crate::a::{Alpha, beta,\n    gamma};\npub use crate::b::Delta;\n\
+                   #[cfg(feature = \"paper\")]\npub use crate::c::paper_thing;\n";
+        let suite = "let _ = beta(1); Alpha::new(); gammas();";
+        assert_eq!(missing_from_suite(lib, suite), ["gamma", "Delta"]);
+    }
+}

@@ -4,7 +4,7 @@ use crate::vector::{Vector, Vector3};
 use alloc::vec;
 use alloc::vec::Vec;
 
-use crate::casteljau::{de_casteljau, de_casteljau_split, elevate_slice, hodograph_slice};
+use crate::casteljau::{de_casteljau, de_casteljau_split, elevate_unchecked, hodograph_slice};
 use crate::curve::{BezierCurve, validate_coordinates};
 use crate::error::{CoreError, check_unit};
 use crate::limits::MAX_DEGREE;
@@ -277,7 +277,7 @@ impl<const D: usize> BezierSurface<D> {
     /// allocating).
     pub fn elevate_u(&self, r: usize) -> Result<Self, CoreError> {
         check_elevation(self.degree_u, r)?;
-        Ok(self.map_columns(|c| elevate_slice(c, r)))
+        Ok(self.map_columns(|c| elevate_unchecked(c, r)))
     }
 
     /// The same surface with degree n + r in v (exact elevation of every row).
@@ -286,7 +286,7 @@ impl<const D: usize> BezierSurface<D> {
     /// As [`Self::elevate_u`].
     pub fn elevate_v(&self, r: usize) -> Result<Self, CoreError> {
         check_elevation(self.degree_v, r)?;
-        Ok(self.map_rows(|c| elevate_slice(c, r)))
+        Ok(self.map_rows(|c| elevate_unchecked(c, r)))
     }
 
     /// Splits at u = t into the patches on [0, t] × [0, 1] and [t, 1] × [0, 1].

@@ -182,6 +182,27 @@ pub(crate) fn check_degree(degree: usize, needed: usize) -> Result<(), ClassAErr
     Ok(())
 }
 
+/// A finite point within ±`bez_core::MAX_COORDINATE` ([`ClassAError::NonFinite`] or
+/// [`ClassAError::InvalidParameter`] naming it otherwise).
+pub(crate) fn check_point<const D: usize>(
+    p: &bez_core::Vector<D>,
+    name: &'static str,
+) -> Result<(), ClassAError> {
+    for &value in p.iter() {
+        if !value.is_finite() {
+            return Err(ClassAError::NonFinite { name });
+        }
+        if value.abs() > bez_core::MAX_COORDINATE {
+            return Err(ClassAError::InvalidParameter {
+                name,
+                value,
+                expected: "within ±1e152 (bez_core::MAX_COORDINATE)",
+            });
+        }
+    }
+    Ok(())
+}
+
 #[cfg(test)]
 mod tests {
     #![allow(clippy::unwrap_used, reason = "tests fail loudly")]

@@ -30,7 +30,7 @@ impl ScaledBernstein {
     /// The polynomial with scaled coefficients `coeffs` (degree `coeffs.len() − 1`); an empty
     /// vector is the zero polynomial of degree 0.
     #[must_use]
-    pub fn new(coeffs: Vec<BigInt>) -> Self {
+    pub(crate) fn new(coeffs: Vec<BigInt>) -> Self {
         if coeffs.is_empty() {
             Self {
                 coeffs: vec![BigInt::zero()],
@@ -42,7 +42,7 @@ impl ScaledBernstein {
 
     /// The polynomial with Bernstein coefficients `b` (aₖ = C(N, k)·bₖ).
     #[must_use]
-    pub fn from_bernstein(b: Vec<BigInt>) -> Self {
+    pub(crate) fn from_bernstein(b: Vec<BigInt>) -> Self {
         let row = binomial_row(b.len().saturating_sub(1));
         Self::new(b.into_iter().zip(row).map(|(x, c)| x * c).collect())
     }
@@ -67,7 +67,7 @@ impl ScaledBernstein {
 
     /// The product: tⁱ(1 − t)ᴺ⁻ⁱ · tʲ(1 − t)ᴹ⁻ʲ = tⁱ⁺ʲ(1 − t)ᴺ⁺ᴹ⁻ⁱ⁻ʲ, a convolution.
     #[must_use]
-    pub fn mul(&self, other: &Self) -> Self {
+    pub(crate) fn mul(&self, other: &Self) -> Self {
         let mut out = vec![BigInt::zero(); self.coeffs.len() + other.coeffs.len() - 1];
         for (i, a) in self.coeffs.iter().enumerate() {
             if a.is_zero() {
@@ -82,7 +82,7 @@ impl ScaledBernstein {
 
     /// Degree elevation by r: multiplication by ((1 − t) + t)ʳ.
     #[must_use]
-    pub fn elevate(&self, r: usize) -> Self {
+    pub(crate) fn elevate(&self, r: usize) -> Self {
         if r == 0 {
             return self.clone();
         }
@@ -91,7 +91,7 @@ impl ScaledBernstein {
 
     /// self + k·other, elevating the lower degree first.
     #[must_use]
-    pub fn add_scaled(&self, other: &Self, k: i64) -> Self {
+    pub(crate) fn add_scaled(&self, other: &Self, k: i64) -> Self {
         let n = self.degree().max(other.degree());
         let a = self.elevate(n - self.degree());
         let b = other.elevate(n - other.degree());
@@ -107,7 +107,7 @@ impl ScaledBernstein {
 
     /// The derivative, aₖ' = (k + 1)aₖ₊₁ − (N − k)aₖ (degree N − 1; a constant gives zero).
     #[must_use]
-    pub fn derivative(&self) -> Self {
+    pub(crate) fn derivative(&self) -> Self {
         let n = self.degree();
         Self::new(
             (0..n)

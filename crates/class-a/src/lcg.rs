@@ -95,7 +95,8 @@ pub fn log_graph(samples: &[(f64, f64)]) -> Result<LogGraph, ClassAError> {
 /// As [`log_graph`] from ready (x, y) points (e.g. [`crate::TypicalPlanar::log_curvature_point`]).
 ///
 /// # Errors
-/// [`ClassAError::TooFewSamples`] with fewer than 2 finite points or all x equal.
+/// [`ClassAError::TooFewSamples`] with fewer than 2 finite points or all x equal;
+/// [`ClassAError::InvalidParameter`] when the fitted line is not representable.
 pub fn log_graph_from_points(points: Vec<(f64, f64)>) -> Result<LogGraph, ClassAError> {
     let points: Vec<(f64, f64)> = points
         .into_iter()
@@ -107,15 +108,32 @@ pub fn log_graph_from_points(points: Vec<(f64, f64)>) -> Result<LogGraph, ClassA
             count: points.len(),
         });
     }
-    let mx = points.iter().map(|p| p.0).sum::<f64>() / n;
-    let my = points.iter().map(|p| p.1).sum::<f64>() / n;
-    let sxx: f64 = points.iter().map(|p| (p.0 - mx).powi(2)).sum();
-    let sxy: f64 = points.iter().map(|p| (p.0 - mx) * (p.1 - my)).sum();
-    if sxx == 0.0 {
+    // Means of x/n (no overflow for any finite input), then the fit on deviations scaled to
+    // at most 1, so that no square overflows: α = (Σ x̂ŷ / Σ x̂²) · (s_y / s_x).
+    let mx = points.iter().map(|p| p.0 / n).sum::<f64>();
+    let my = points.iter().map(|p| p.1 / n).sum::<f64>();
+    let spread = |f: &dyn Fn(&(f64, f64)) -> f64| points.iter().map(f).fold(0.0_f64, f64::max);
+    let (sx, sy) = (
+        spread(&|p| (p.0 - mx).abs()),
+        spread(&|p| (p.1 - my).abs()).max(f64::MIN_POSITIVE),
+    );
+    if sx == 0.0 || !sx.is_finite() || !sy.is_finite() {
         return Err(ClassAError::TooFewSamples { count: 1 });
     }
-    let slope = sxy / sxx;
+    let sxx: f64 = points.iter().map(|p| ((p.0 - mx) / sx).powi(2)).sum();
+    let sxy: f64 = points
+        .iter()
+        .map(|p| (p.0 - mx) / sx * ((p.1 - my) / sy))
+        .sum();
+    let slope = sxy / sxx * (sy / sx);
     let intercept = my - slope * mx;
+    if !(slope.is_finite() && intercept.is_finite()) {
+        return Err(ClassAError::InvalidParameter {
+            name: "log graph slope",
+            value: slope,
+            expected: "a finite line through the points",
+        });
+    }
     let (lo, hi) = points
         .iter()
         .fold((f64::INFINITY, f64::NEG_INFINITY), |(a, b), p| {

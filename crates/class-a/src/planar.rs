@@ -87,14 +87,13 @@ impl PlanarGeometry {
     /// Validates the three points.
     ///
     /// # Errors
-    /// [`ClassAError::NonFinite`], [`ClassAError::CoincidentPoints`],
+    /// [`ClassAError::NonFinite`], [`ClassAError::InvalidParameter`] (a coordinate beyond
+    /// ±`bez_core::MAX_COORDINATE`), [`ClassAError::CoincidentPoints`],
     /// [`ClassAError::DegenerateTurn`] (collinear, or a turn of π),
     /// [`ClassAError::ChordOutsideTangents`] (δ not strictly between 0 and ψ).
     pub fn new(a0: &Vector2, a1: &Vector2, a2: &Vector2) -> Result<Self, ClassAError> {
         for (p, name) in [(a0, "alpha0"), (a1, "alpha1"), (a2, "alpha2")] {
-            if !(p.x().is_finite() && p.y().is_finite()) {
-                return Err(ClassAError::NonFinite { name });
-            }
+            crate::error::check_point(p, name)?;
         }
         let (t0, t1, c) = (a1 - a0, a2 - a1, a2 - a0);
         for (v, first, second) in [(&t0, 0, 1), (&t1, 1, 2), (&c, 0, 2)] {

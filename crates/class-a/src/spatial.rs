@@ -62,8 +62,8 @@ struct Setup {
 impl Setup {
     fn new(a: &[Vector3; 4], degree: usize) -> Result<Self, ClassAError> {
         crate::error::check_degree(degree, 2)?;
-        if !a.iter().all(|p| p.iter().all(|x| x.is_finite())) {
-            return Err(ClassAError::NonFinite { name: "alpha" });
+        for p in a {
+            crate::error::check_point(p, "alpha")?;
         }
         let (t0, t1, chord) = (a[1] - a[0], a[3] - a[2], a[3] - a[0]);
         for (v, first, second) in [(&t0, 0, 1), (&t1, 2, 3), (&chord, 0, 3)] {

@@ -7,12 +7,16 @@
     reason = "tests fail loudly on unexpected errors"
 )]
 
-use bez_core::{BezierCurve, Vector2, Vector3};
+use bez_core::{BezierCurve, BezierForm, Vector2, Vector3};
 use class_a::{
-    ClassAReport, Matrix2, Matrix3, TypicalPlanar, TypicalSpatial, apollonius_pole, class_a_curve,
-    curvature_certificate, curvature_samples, log_graph, log_spiral_pole, perturb2,
-    planar_feasibility, rotation, solve_scale, spiral_deviation, torsion_certificate,
-    torsion_samples,
+    Certificate, ClassACurve, ClassAError, ClassAReport, Condition, INTERPOLATION_TOLERANCE,
+    Interpolation, LogGraph, MAX_PIECES, MAX_SUBDIVISION_DEPTH, Matrix, Matrix2, Matrix3,
+    Monotonicity, PlanarFeasibility, PlanarGeometry, SUBCURVE_SAMPLES, ScaledBernstein,
+    TypicalPlanar, TypicalSpatial, UndecidedCause, apollonius_pole, class_a_curve,
+    curvature_certificate, curvature_numerator, curvature_samples, curvature_with_derivative,
+    log_graph, log_graph_from_points, log_spiral_pole, perturb2, perturb3, planar_feasibility,
+    rotation, solve_scale, spiral_deviation, torsion_certificate, torsion_numerator,
+    torsion_samples, torsion_with_derivative, typical_matrix2, typical_planar_margin,
 };
 use proptest::prelude::*;
 
@@ -114,6 +118,71 @@ proptest! {
     }
 }
 
+proptest! {
+    #![proptest_config(ProptestConfig::with_cases(100))]
+
+    /// The remaining entry points: numerators, derivatives of κ and τ, log graphs from points,
+    /// typical matrices and margins, interpolation measures and the Class A curve type.
+    #[test]
+    fn numerators_graphs_and_measures(a0 in v2(), a1 in v2(), a2 in v2(), b in v3(), n in degree(), s in wild(), th in wild(), t in wild()) {
+        let _ = typical_planar_margin(s, th);
+        let m: Matrix<2> = typical_matrix2(s, th);
+        if let Ok(c) = ClassACurve::new(&a0, &a1, &m, n) {
+            prop_assert!(c.as_bezier().points().iter().all(|p| p.is_finite()));
+            let c = c.into_bezier();
+            if let Ok((num, den)) = curvature_numerator(&c) {
+                let nums: [&ScaledBernstein; 2] = [&num, &den];
+                for x in nums { let _ = (x.degree(), x.coefficients().len(), x.is_zero()); }
+            }
+            if let Ok((k, dk)) = curvature_with_derivative(&c, t) {
+                prop_assert!(k.is_finite() && dk.is_finite());
+            }
+            let i = Interpolation::measure(c.points(), &a0, &a1, &(a2 - a1), &a2);
+            let _ = i.worst();
+            let _ = i.within(INTERPOLATION_TOLERANCE);
+        }
+        let g: Result<LogGraph, ClassAError> = log_graph_from_points(vec![(s, th), (t, s), (th, t)]);
+        if let Ok(g) = g { prop_assert!(g.slope.is_finite()); }
+        if let Ok(geo) = PlanarGeometry::new(&a0, &a1, &a2) {
+            prop_assert!(geo.turn.is_finite() && geo.chord_length.is_finite());
+        }
+        let f: Result<PlanarFeasibility, ClassAError> = planar_feasibility(&a0, &a1, &a2, n);
+        let _ = f.map(|f| f.is_feasible());
+        let m3 = perturb3(&(rotation(&b, th) * s), [t, 0.0, 0.0, t]);
+        if let Ok(c) = class_a_curve(&b, &Vector3::new(1.0, t, 0.0), &m3, n) {
+            if let Ok((num, _)) = torsion_numerator(&c) { let _ = num.degree(); }
+            if let Ok((tau, dtau)) = torsion_with_derivative(&c, t) {
+                prop_assert!(tau.is_finite() && dtau.is_finite());
+            }
+            if let Ok(cert) = torsion_certificate(&c) {
+                let verdict: Monotonicity = cert.verdict;
+                if let Monotonicity::Undecided { cause, .. } = verdict {
+                    prop_assert!(matches!(cause, UndecidedCause::Regularity | UndecidedCause::Sign));
+                }
+            }
+        }
+    }
+}
+
+#[test]
+fn limits_are_stated() {
+    const { assert!(MAX_PIECES > 0 && MAX_SUBDIVISION_DEPTH > 0 && SUBCURVE_SAMPLES > 0) };
+    let r = ClassAReport::of_2x2(&Matrix2::identity()).unwrap();
+    let c: Condition = r.farin3;
+    assert!(c.holds);
+    let cert: Certificate = curvature_certificate(
+        &class_a_curve(
+            &Vector2::new(0.0, 0.0),
+            &Vector2::new(1.0, 0.0),
+            &typical_matrix2(1.2, 0.2),
+            5,
+        )
+        .unwrap(),
+    )
+    .unwrap();
+    assert!(cert.is_monotone());
+}
+
 #[test]
 fn sample_counts_above_the_limit_are_errors() {
     let c = class_a_curve(
@@ -125,4 +194,15 @@ fn sample_counts_above_the_limit_are_errors() {
     .unwrap();
     assert!(curvature_samples(&c, usize::MAX).is_err());
     assert_eq!(curvature_samples(&c, 0).unwrap().len(), 2);
+}
+
+/// Every item the crate re-exports is exercised above (a new public item fails here until it
+/// joins this suite).
+#[test]
+fn every_public_item_is_in_this_suite() {
+    let missing = bez_core::proptest_support::missing_from_suite(
+        include_str!("../src/lib.rs"),
+        include_str!("no_panic.rs"),
+    );
+    assert!(missing.is_empty(), "not covered by this suite: {missing:?}");
 }

@@ -25,7 +25,8 @@ use crate::error::LambdaError;
 ///
 /// # Errors
 /// [`LambdaError::TooFewPoints`] below 2 points, [`LambdaError::NotIncreasing`] if the
-/// abscissae do not increase strictly, `CoreError::NonFinite` for non-finite data.
+/// abscissae do not increase strictly, `CoreError::NonFinite` or `CoordinateOutOfRange` for
+/// data outside the coordinate contract, `CoreError::Overflow` when a slope overflows.
 pub fn shape_preserving_polygons(data: &[Vector2]) -> Result<Vec<[Vector2; 3]>, LambdaError> {
     if data.len() < 2 {
         return Err(LambdaError::TooFewPoints {
@@ -38,6 +39,18 @@ pub fn shape_preserving_polygons(data: &[Vector2]) -> Result<Vec<[Vector2; 3]>, 
         .position(|p| !(p.x().is_finite() && p.y().is_finite()))
     {
         return Err(bez_core::CoreError::NonFinite { index }.into());
+    }
+    if let Some((index, p)) = data
+        .iter()
+        .enumerate()
+        .find(|(_, p)| p.amax() > bez_core::MAX_COORDINATE)
+    {
+        return Err(bez_core::CoreError::CoordinateOutOfRange {
+            index,
+            value: p.amax(),
+            max: bez_core::MAX_COORDINATE,
+        }
+        .into());
     }
     if let Some(i) = (1..data.len()).find(|&i| data[i].x() <= data[i - 1].x()) {
         return Err(LambdaError::NotIncreasing {
@@ -100,7 +113,15 @@ pub fn shape_preserving_polygons(data: &[Vector2]) -> Result<Vec<[Vector2; 3]>, 
         }
         i += 1;
     }
-    Ok(out)
+    // Chord slopes of nearly vertical steps (Δx tiny against Δy) can overflow.
+    if out.iter().flatten().all(Vector2::is_finite) {
+        Ok(out)
+    } else {
+        Err(bez_core::CoreError::Overflow {
+            operation: "shape-preserving slopes",
+        }
+        .into())
+    }
 }
 
 /// The cubic λ-curves (n = 2) on [`shape_preserving_polygons`], λ cycling through `lambdas`

@@ -9,9 +9,9 @@
 
 use bez_core::{BezierForm, Vector2};
 use lambda_bezier::{
-    LambdaBasis, LambdaBezierCurve, LambdaBezierSurface, LambdaRange, PatchJoin, continuity,
-    corner_cut_ratio, hermite_segment, join_c1, join_g1, join_g2, join_patches,
-    shape_preserving_curves, shape_preserving_polygons,
+    Continuity, LambdaBasis, LambdaBezierCurve, LambdaBezierSurface, LambdaError, LambdaRange,
+    PatchJoin, continuity, corner_cut_ratio, hermite_segment, join_c1, join_g1, join_g2,
+    join_patches, lambda_range, shape_preserving_curves, shape_preserving_polygons,
 };
 use proptest::prelude::*;
 
@@ -55,6 +55,7 @@ proptest! {
         if let Ok(r) = LambdaRange::new(n) {
             prop_assert!(r.min().is_finite() && r.max().is_finite());
             let _ = r.check(lambda);
+            prop_assert_eq!(lambda_range(n).unwrap(), r);
         }
         for b in [LambdaBasis::new(n, lambda), LambdaBasis::new_unrestricted(n, lambda)] {
             let Ok(b) = b else { continue };
@@ -85,7 +86,8 @@ proptest! {
             let _ = a.with_lambda(lb);
         }
         if let (Ok(a), Ok(b)) = (&a, &b) {
-            let _ = continuity(a, b, 1e-9);
+            let c: Continuity = continuity(a, b, 1e-9);
+            prop_assert!(c <= Continuity::C1);
             for j in [join_g1(a, b), join_c1(a, b), join_g2(a, b)].into_iter().flatten() {
                 prop_assert!(j.points().iter().all(finite));
             }
@@ -119,6 +121,36 @@ proptest! {
     }
 }
 
+/// λ fitting on wild points and targets: a λ inside the valid interval with a finite residual,
+/// or an error.
+#[cfg(feature = "fit")]
+mod fit {
+    use super::*;
+    use lambda_bezier::{LambdaFit, LambdaTarget, fit_lambda, minimize_over_range};
+
+    proptest! {
+        #![proptest_config(ProptestConfig::with_cases(64))]
+
+        #[test]
+        fn fitting_never_panics(p in points(), x in wild(), y in wild(), t in wild(), kappa in wild()) {
+            for target in [
+                LambdaTarget::Point(Vector2::new(x, y)),
+                LambdaTarget::Curvature { t, kappa },
+            ] {
+                let r: Result<LambdaFit, LambdaError> = fit_lambda(&p, &target);
+                if let Ok(fit) = r {
+                    prop_assert!(fit.lambda.is_finite() && fit.residual.is_finite());
+                }
+            }
+            if let Ok(range) = LambdaRange::new(p.len().max(2))
+                && let Ok(l) = minimize_over_range(&range, |l| (l - x).abs())
+            {
+                prop_assert!(range.contains(l));
+            }
+        }
+    }
+}
+
 /// Sizes the caller chooses are refused before any work.
 #[test]
 fn basis_degrees_above_the_kernel_limit_are_errors() {
@@ -127,4 +159,15 @@ fn basis_degrees_above_the_kernel_limit_are_errors() {
         assert!(LambdaBasis::new_unrestricted(n, 0.0).is_err());
     }
     assert!(LambdaBasis::new(bez_core::MAX_DEGREE - 1, 0.0).is_ok());
+}
+
+/// Every item the crate re-exports is exercised above (a new public item fails here until it
+/// joins this suite).
+#[test]
+fn every_public_item_is_in_this_suite() {
+    let missing = bez_core::proptest_support::missing_from_suite(
+        include_str!("../src/lib.rs"),
+        include_str!("no_panic.rs"),
+    );
+    assert!(missing.is_empty(), "not covered by this suite: {missing:?}");
 }

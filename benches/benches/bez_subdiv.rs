@@ -69,8 +69,26 @@ fn versus_peers(c: &mut Criterion) {
                 kurbo_points.len()
             });
         });
+        let mut wang_points = Vec::new();
+        let Ok(wang_segments) =
+            bez_subdiv::flatten_wang(&curve, tol, |p| wang_points.push(p.point))
+        else {
+            continue;
+        };
+        g.throughput(Throughput::Elements(wang_segments as u64));
+        g.bench_function(BenchmarkId::new("bezkit flatten_wang", &name), |b| {
+            b.iter(|| {
+                wang_points.clear();
+                bez_subdiv::flatten_wang(black_box(&curve), tol, |p| wang_points.push(p.point))
+            });
+        });
         let mut lyon_points = Vec::new();
         lyon.for_each_flattened(tol, &mut |s| lyon_points.push(s.to));
+        assert_eq!(
+            lyon_points.len(),
+            wang_segments,
+            "{name}: Wang's count as lyon_geom's"
+        );
         g.throughput(Throughput::Elements(lyon_points.len() as u64));
         g.bench_function(
             BenchmarkId::new("lyon_geom for_each_flattened", &name),

@@ -57,6 +57,7 @@ mod near_optimal;
 mod split_rule;
 #[cfg(test)]
 mod test_support;
+mod wang;
 
 pub use crate::batch::flatten_batch;
 pub use crate::bound::{max_second_difference, wang_depth, wang_segment_count};
@@ -77,6 +78,7 @@ pub use crate::split_rule::split_objective;
 pub use crate::split_rule::{
     ADAPTIVE_BAND, Branch, Choice, Levels, Objective, PAPER_LEVELS, Search, SplitRule,
 };
+pub use crate::wang::{MAX_WANG_SEGMENTS, flatten_wang};
 
 /// The README's example, compiled and run with the doctests.
 #[cfg(doctest)]

@@ -9,7 +9,12 @@
 //! [`SplitRule`]: the classical t = ½, or the parameter minimizing the pieces' flatness
 //! (Def. 2.2) or convex-hull area (Def. 2.1), searched on the paper's grid or exactly.
 //!
-//! Beyond the paper, flattenings with a Hausdorff guarantee: [`flatten_guaranteed`] (halving
+//! **Start with [`Flattener`]**: one entry point with an absolute tolerance, the points streamed
+//! to a closure, paths of several curves, and a [`Method`] (see its "which method" table); the
+//! default, [`Method::Fast`], is guaranteed and the fastest.
+//!
+//! Beyond the paper, flattenings with a Hausdorff guarantee: [`flatten_wang`] (Wang's uniform
+//! count, no subdivision), [`flatten_guaranteed`] (halving
 //! until the control points are near the chord segment), [`flatten_local_wang`] (Wang's bound
 //! piece by piece, O(n) per point, the fast one at high degree) and [`flatten_near_optimal`]
 //! (close to the lower bound [`optimal_segment_count`]); [`flatten_fixed_into`] is the fixed rule
@@ -20,7 +25,8 @@
 //! λ-Bézier curve, a Class A curve or a subdivision-curve segment of the other crates, or a
 //! `&dyn BezierForm<2>`. They flatten the exact Bézier form, which the curve lends for free.
 //!
-//! Feature `rayon`: [`flatten_batch`] flattens many curves in parallel. Feature `serde`: serde on
+//! Feature `rayon`: [`flatten_batch`] flattens many curves in parallel. Feature `kurbo`:
+//! `Flattener::flatten_bez_path`. Feature `serde`: serde on
 //! the data types. Feature `paper`: what exists only to reproduce or compare with the paper, the
 //! seeded test curves of Table 1 (`cases`), the exact-optimum split search (`Search::Exact`,
 //! with argmin) and `split_objective`; it brings rand and argmin, which the library itself
@@ -49,6 +55,7 @@ mod chord;
 mod error;
 mod fixed;
 mod flatten;
+mod flattener;
 mod guaranteed;
 mod hausdorff;
 mod local_wang;
@@ -68,6 +75,7 @@ pub use crate::flatten::{
     DEFAULT_MAX_DEPTH, DEFAULT_TOLERANCE, FlattenOptions, FlattenStats, Flattening, Piece,
     curve_size, flatten,
 };
+pub use crate::flattener::{Flattener, Method, PathPoint};
 pub use crate::guaranteed::{FlatPoint, distance_to_segment, flatten_guaranteed};
 pub use crate::hausdorff::{HausdorffSampling, measured_hausdorff};
 pub use crate::local_wang::{LOCAL_WANG_STEPS, flatten_local_wang};

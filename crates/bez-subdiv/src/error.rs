@@ -38,6 +38,23 @@ pub enum SubdivError {
         /// The largest count that can be returned.
         limit: usize,
     },
+    /// A subdivision depth cap above [`MAX_FLATTEN_DEPTH`](crate::MAX_FLATTEN_DEPTH).
+    #[error("max_depth {value} is above the limit {max}: deeper pieces are at rounding level")]
+    DepthTooLarge {
+        /// The cap given.
+        value: usize,
+        /// The largest cap accepted.
+        max: usize,
+    },
+    /// A tolerance below the rounding level of the control points' coordinates: no
+    /// subdivision can meet it, and trying enumerates pieces at rounding level.
+    #[error("tolerance {tolerance} is below the rounding level {min} of the coordinates")]
+    ToleranceBelowRounding {
+        /// The (absolute) tolerance given.
+        tolerance: f64,
+        /// The smallest tolerance accepted for this curve.
+        min: f64,
+    },
     /// The 1-D optimizer failed.
     #[error("the split-parameter optimizer failed: {message}")]
     Optimizer {

@@ -7,7 +7,7 @@ use bez_core::{
 };
 
 use crate::error::SubdivError;
-use crate::flatten::{DEFAULT_MAX_DEPTH, FlattenStats, curve_size, validate};
+use crate::flatten::{DEFAULT_MAX_DEPTH, FlattenStats, curve_size, validate_with_depth};
 use crate::measure::within_chord_line;
 
 /// The polyline of [`flatten`](crate::flatten()) with [`SplitRule::Fixed`](crate::SplitRule),
@@ -23,7 +23,9 @@ use crate::measure::within_chord_line;
 ///
 /// # Errors
 /// As [`flatten`](crate::flatten()): [`SubdivError::TooFewPoints`],
-/// [`SubdivError::InvalidTolerance`], [`SubdivError::DepthLimit`].
+/// [`SubdivError::InvalidTolerance`], [`SubdivError::DepthLimit`],/// [`SubdivError::DepthTooLarge`] for `max_depth` above [`MAX_FLATTEN_DEPTH`](crate::MAX_FLATTEN_DEPTH),
+/// [`SubdivError::ToleranceBelowRounding`] below 16 ulps of the largest coordinate (checked
+/// before any work).
 pub fn flatten_fixed_into<C: BezierForm<2> + ?Sized>(
     curve: &C,
     tolerance: f64,
@@ -40,7 +42,7 @@ fn fixed_into_bezier(
     max_depth: usize,
     polyline: &mut Vec<Vector2>,
 ) -> Result<FlattenStats, SubdivError> {
-    validate(curve, tolerance)?;
+    validate_with_depth(curve, tolerance, max_depth)?;
     polyline.clear();
     let size = curve_size(curve);
     let mut stats = FlattenStats::default();

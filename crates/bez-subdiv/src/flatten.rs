@@ -144,6 +144,22 @@ pub(crate) fn validate(curve: &BezierCurve<2>, eps: f64) -> Result<(), SubdivErr
     Ok(())
 }
 
+/// [`validate`] and the work limits of [`crate::limits::check_work`] for eq. (3)'s relative ε.
+pub(crate) fn validate_with_depth(
+    curve: &BezierCurve<2>,
+    eps: f64,
+    max_depth: usize,
+) -> Result<(), SubdivError> {
+    validate(curve, eps)?;
+    let size = curve_size(curve);
+    if size > 0.0 {
+        crate::limits::check_work(curve, eps * size, max_depth)?;
+    } else {
+        crate::limits::check_work(curve, f64::INFINITY, max_depth)?;
+    }
+    Ok(())
+}
+
 /// Subdivides `curve` until every piece is flat by eq. (3) and returns the pieces' control
 /// polygons as a polyline.
 ///
@@ -166,7 +182,9 @@ pub(crate) fn validate(curve: &BezierCurve<2>, eps: f64) -> Result<(), SubdivErr
 /// # Errors
 /// [`SubdivError::TooFewPoints`] for a degree-0 curve, [`SubdivError::InvalidTolerance`],
 /// [`SubdivError::DepthLimit`] when a piece is not flat at `max_depth`,
-/// [`SubdivError::Optimizer`] from an exact rule.
+/// [`SubdivError::Optimizer`] from an exact rule;/// [`SubdivError::DepthTooLarge`] for `max_depth` above [`MAX_FLATTEN_DEPTH`](crate::MAX_FLATTEN_DEPTH),
+/// [`SubdivError::ToleranceBelowRounding`] below 16 ulps of the largest coordinate (checked
+/// before any work).
 pub fn flatten<C: BezierForm<2> + ?Sized>(
     curve: &C,
     options: &FlattenOptions,
@@ -181,7 +199,7 @@ fn flatten_bezier(
 ) -> Result<Flattening, SubdivError> {
     let start = now();
     let eps = options.tolerance;
-    validate(curve, eps)?;
+    validate_with_depth(curve, eps, options.max_depth)?;
     let n = curve.points().len();
     let size = curve_size(curve);
     let mut stats = FlattenStats::default();

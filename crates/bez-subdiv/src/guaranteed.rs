@@ -69,7 +69,9 @@ fn within_chord_segment(piece: &[Vector2], tolerance: f64) -> bool {
 /// # Errors
 /// [`SubdivError::TooFewPoints`] for a degree-0 curve, [`SubdivError::InvalidTolerance`],
 /// [`SubdivError::DepthLimit`] when a piece is not within tolerance after `max_depth` halvings
-/// (e.g. a tolerance below the rounding level of the coordinates).
+/// (e.g. a tolerance below the rounding level of the coordinates);/// [`SubdivError::DepthTooLarge`] for `max_depth` above [`MAX_FLATTEN_DEPTH`](crate::MAX_FLATTEN_DEPTH),
+/// [`SubdivError::ToleranceBelowRounding`] below 16 ulps of the largest coordinate (checked
+/// before any work).
 pub fn flatten_guaranteed<C: BezierForm<2> + ?Sized>(
     curve: &C,
     tolerance: f64,
@@ -106,6 +108,7 @@ pub(crate) fn halve_to_points(
     if n < 2 {
         return Err(SubdivError::TooFewPoints { got: n });
     }
+    crate::limits::check_work(curve, tolerance, max_depth)?;
     let mut out = vec![FlatPoint {
         t: 0.0,
         point: curve.start(),

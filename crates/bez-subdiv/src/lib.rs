@@ -58,6 +58,7 @@ mod flatten;
 mod flattener;
 mod guaranteed;
 mod hausdorff;
+mod limits;
 mod local_wang;
 mod measure;
 mod near_optimal;
@@ -78,6 +79,7 @@ pub use crate::flatten::{
 pub use crate::flattener::{Flattener, Method, PathPoint};
 pub use crate::guaranteed::{FlatPoint, distance_to_segment, flatten_guaranteed};
 pub use crate::hausdorff::{HausdorffSampling, measured_hausdorff};
+pub use crate::limits::MAX_FLATTEN_DEPTH;
 pub use crate::local_wang::{LOCAL_WANG_STEPS, flatten_local_wang};
 pub use crate::measure::{distance_to_chord_line, flatness, hull_area, max_chord_distance};
 pub use crate::near_optimal::{flatten_near_optimal, optimal_segment_count};

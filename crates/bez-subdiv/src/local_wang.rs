@@ -35,7 +35,9 @@ pub const LOCAL_WANG_STEPS: usize = 16;
 /// # Errors
 /// [`SubdivError::TooFewPoints`] for a degree-0 curve, [`SubdivError::InvalidTolerance`],
 /// [`SubdivError::DepthLimit`] when a piece still needs more than [`LOCAL_WANG_STEPS`] steps
-/// after `max_depth` halvings (e.g. a tolerance below the rounding level of the coordinates).
+/// after `max_depth` halvings (e.g. a tolerance below the rounding level of the coordinates);/// [`SubdivError::DepthTooLarge`] for `max_depth` above [`MAX_FLATTEN_DEPTH`](crate::MAX_FLATTEN_DEPTH),
+/// [`SubdivError::ToleranceBelowRounding`] below 16 ulps of the largest coordinate (checked
+/// before any work).
 ///
 /// ```
 /// use bez_core::{BezierCurve, Vector2};

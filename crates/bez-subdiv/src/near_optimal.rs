@@ -181,7 +181,9 @@ fn longest_step(
 /// # Errors
 /// [`SubdivError::InvalidTolerance`], [`SubdivError::TooFewPoints`], [`SubdivError::DepthLimit`]
 /// when no step longer than 2^−`max_depth` in parameter passes (a tolerance below the rounding
-/// level of the coordinates).
+/// level of the coordinates); [`SubdivError::TooManySegments`] above 2²⁰ segments;/// [`SubdivError::DepthTooLarge`] for `max_depth` above [`MAX_FLATTEN_DEPTH`](crate::MAX_FLATTEN_DEPTH),
+/// [`SubdivError::ToleranceBelowRounding`] below 16 ulps of the largest coordinate (checked
+/// before any work).
 pub fn flatten_near_optimal<C: BezierForm<2> + ?Sized>(
     curve: &C,
     tolerance: f64,
@@ -191,12 +193,17 @@ pub fn flatten_near_optimal<C: BezierForm<2> + ?Sized>(
 }
 
 /// [`flatten_near_optimal`] on the Bézier form (one instance for every curve type).
+/// The most segments [`flatten_near_optimal`] produces (2²⁰): at about 10 µs per segment a
+/// tolerance that needs more is a request for seconds of work per curve.
+const MAX_OPTIMAL_SEGMENTS: usize = 1 << 20;
+
 fn near_optimal_bezier(
     curve: &BezierCurve<2>,
     tolerance: f64,
     max_depth: usize,
 ) -> Result<Vec<FlatPoint>, SubdivError> {
     let (ts, cumulative) = density_integral(curve, tolerance)?;
+    crate::limits::check_work(curve, tolerance, max_depth)?;
     let density = Density { ts, cumulative };
     let min_step = 0.5_f64.powi(i32::try_from(max_depth).unwrap_or(i32::MAX));
     let mut out = vec![FlatPoint {
@@ -211,6 +218,12 @@ fn near_optimal_bezier(
         let Some(b) = longest_step(curve, a, guess, tolerance, min_step)? else {
             return Err(SubdivError::DepthLimit { limit: max_depth });
         };
+        if out.len() > MAX_OPTIMAL_SEGMENTS {
+            return Err(SubdivError::TooManySegments {
+                tolerance,
+                limit: MAX_OPTIMAL_SEGMENTS,
+            });
+        }
         let step_advance = density.at(b) - from;
         if step_advance > 0.0 && b < 1.0 {
             advance = step_advance;

@@ -1,0 +1,40 @@
+//! What a flattening accepts before it starts: a depth cap and a tolerance above the rounding
+//! level of the coordinates, so that no call enumerates pieces at rounding level.
+
+use bez_core::{BezierCurve, Vector2};
+
+use crate::error::SubdivError;
+
+/// The largest `max_depth` a subdividing flattening accepts: 48. A piece at level 48 spans
+/// 2⁻⁴⁸ of the parameter range; its control points differ by a few ulps, where the flatness
+/// tests decide on rounding noise.
+pub const MAX_FLATTEN_DEPTH: usize = 48;
+
+/// The smallest absolute tolerance for a curve, 16 ulps of its largest coordinate
+/// (16 · 2⁻⁵² · maxᵢ |Pᵢ|∞): below it no polyline of rounded points can be told apart from the
+/// curve.
+#[must_use]
+pub(crate) fn rounding_floor(curve: &BezierCurve<2>) -> f64 {
+    16.0 * f64::EPSILON * curve.points().iter().map(Vector2::amax).fold(0.0, f64::max)
+}
+
+/// [`SubdivError::DepthTooLarge`] above [`MAX_FLATTEN_DEPTH`];
+/// [`SubdivError::ToleranceBelowRounding`] for an absolute tolerance below
+/// [`rounding_floor`] (a curve collapsed to the origin has floor 0 and passes).
+pub(crate) fn check_work(
+    curve: &BezierCurve<2>,
+    tolerance: f64,
+    max_depth: usize,
+) -> Result<(), SubdivError> {
+    if max_depth > MAX_FLATTEN_DEPTH {
+        return Err(SubdivError::DepthTooLarge {
+            value: max_depth,
+            max: MAX_FLATTEN_DEPTH,
+        });
+    }
+    let min = rounding_floor(curve);
+    if tolerance < min {
+        return Err(SubdivError::ToleranceBelowRounding { tolerance, min });
+    }
+    Ok(())
+}

@@ -227,6 +227,120 @@ pub fn missing_from_suite(lib_rs: &str, suite: &str) -> Vec<String> {
         .collect()
 }
 
+/// The public functions and methods (`pub fn`, `pub const fn`) that `sources` define and that
+/// `suite` never calls: the callable surface the adversarial test forgot.
+///
+/// `sources` are a crate's `src/*.rs` texts; `lib_rs` is its `src/lib.rs`, used to leave out
+/// modules declared under `#[cfg(feature = "paper")]`. In each source the text from its first
+/// `#[cfg(test)]` on is ignored, and so is a function right under a `#[cfg(feature = "paper")]`
+/// attribute. A name counts as called when the suite has it after `.` or `::`, or before `(`.
+#[must_use]
+pub fn uncalled_in_suite(lib_rs: &str, sources: &[(&str, &str)], suite: &str) -> Vec<String> {
+    let paper_modules: Vec<&str> = paper_modules(lib_rs);
+    let mut names: Vec<String> = Vec::new();
+    for (file, text) in sources {
+        let module = file.trim_end_matches(".rs");
+        if paper_modules.contains(&module) {
+            continue;
+        }
+        let body = text.split("#[cfg(test)]").next().unwrap_or("");
+        let mut paper_only = false;
+        for line in body.lines().map(str::trim) {
+            if line.starts_with("#[cfg(feature = \"paper\")]") {
+                paper_only = true;
+                continue;
+            }
+            let rest = line
+                .strip_prefix("pub fn ")
+                .or_else(|| line.strip_prefix("pub const fn "));
+            if let Some(rest) = rest {
+                let name: String = rest
+                    .chars()
+                    .take_while(|c| c.is_alphanumeric() || *c == '_')
+                    .collect();
+                if !paper_only && !name.is_empty() && !names.contains(&name) {
+                    names.push(name);
+                }
+            }
+            if !line.starts_with("#[") && !line.starts_with("///") {
+                paper_only = false;
+            }
+        }
+    }
+    names.retain(|name| !called(suite, name));
+    names
+}
+
+/// Modules that `lib_rs` declares right under a `#[cfg(feature = "paper")]` attribute.
+fn paper_modules(lib_rs: &str) -> Vec<&str> {
+    let mut out = Vec::new();
+    let mut paper = false;
+    for line in lib_rs.lines().map(str::trim) {
+        if line.starts_with("#[cfg(feature = \"paper\")]") {
+            paper = true;
+            continue;
+        }
+        if paper {
+            let decl = line
+                .strip_prefix("pub mod ")
+                .or_else(|| line.strip_prefix("mod "));
+            if let Some(decl) = decl {
+                out.push(decl.trim_end_matches(';').trim());
+            }
+        }
+        paper &= line.starts_with("#[") || line.starts_with("//");
+    }
+    out
+}
+
+/// Whether `name` occurs in `suite` as a call or a path: after `.` or `::`, or before `(`.
+fn called(suite: &str, name: &str) -> bool {
+    let is_word = |c: char| c.is_alphanumeric() || c == '_';
+    suite.match_indices(name).any(|(i, _)| {
+        let before = &suite[..i];
+        let after = &suite[i + name.len()..];
+        if before.chars().next_back().is_some_and(is_word)
+            || after.chars().next().is_some_and(is_word)
+        {
+            return false;
+        }
+        before.ends_with('.')
+            || before.ends_with("::")
+            || after.starts_with('(')
+            || after.starts_with("::<")
+    })
+}
+
+/// The `src/*.rs` files of the crate at `manifest_dir` (its `CARGO_MANIFEST_DIR`), as
+/// (file name, text) pairs for [`uncalled_in_suite`].
+///
+/// # Panics
+/// When the directory or a file cannot be read (a test helper: the test fails).
+#[must_use]
+#[allow(
+    clippy::expect_used,
+    reason = "a test helper: an unreadable source fails the test"
+)]
+pub fn crate_sources(manifest_dir: &str) -> Vec<(String, String)> {
+    let dir = std::path::Path::new(manifest_dir).join("src");
+    let mut out: Vec<(String, String)> = std::fs::read_dir(&dir)
+        .expect("the crate's src directory is readable")
+        .filter_map(Result::ok)
+        .map(|e| e.path())
+        .filter(|p| p.extension().is_some_and(|x| x == "rs"))
+        .map(|p| {
+            let name = p
+                .file_name()
+                .map(|n| n.to_string_lossy().into_owned())
+                .unwrap_or_default();
+            let text = std::fs::read_to_string(&p).expect("a source file is readable");
+            (name, text)
+        })
+        .collect();
+    out.sort();
+    out
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -237,5 +351,19 @@ mod tests {
                    #[cfg(feature = \"paper\")]\npub use crate::c::paper_thing;\n";
         let suite = "let _ = beta(1); Alpha::new(); gammas();";
         assert_eq!(missing_from_suite(lib, suite), ["gamma", "Delta"]);
+    }
+
+    #[test]
+    fn finds_public_functions_the_suite_never_calls() {
+        let lib = "mod a;\n#[cfg(feature = \"paper\")]\npub mod cases;\n";
+        let a = "impl X {\n    pub fn called(&self) {}\n    pub const fn pathed() {}\n    \
+                 pub fn only_named() {}\n    fn private() {}\n    #[cfg(feature = \"paper\")]\n    \
+                 pub fn paper_only() {}\n}\n#[cfg(test)]\nmod tests { pub fn in_tests() {} }\n";
+        let cases = "pub fn reproduction() {}\n";
+        let suite = "x.called(); X::pathed(); // only_named is mentioned, not called";
+        assert_eq!(
+            uncalled_in_suite(lib, &[("a.rs", a), ("cases.rs", cases)], suite),
+            ["only_named"]
+        );
     }
 }

@@ -96,6 +96,11 @@ proptest! {
             let _ = s.curve_at_u(u);
             let _ = s.curve_at_v(v);
             let _ = s.elevate_u(1).unwrap().elevate_v(2).unwrap();
+            let _ = (s.degree_v(), s.control_point(du, dv), s.control_point(usize::MAX, 0));
+            if let Ok(p) = s.eval_partial(u, v, du, dv) {
+                prop_assert!(p.is_finite());
+            }
+            let _ = s.eval_partial(0.5, 0.5, usize::MAX, usize::MAX);
         }
         let _ = BezierSurface::<3>::new(vec![vec![]]);
         let _ = BezierSurface::<3>::from_flat(usize::MAX, 2, vec![]);
@@ -293,6 +298,91 @@ fn high_degree_curves_evaluate_split_and_project_correctly() {
     assert!(n.distance < 1e-9, "{n:?}");
     let b = c.bounding_box();
     assert!(b.contains(&mid, 0.0));
+}
+
+proptest! {
+    #![proptest_config(ProptestConfig::with_cases(256))]
+
+    /// Vector arithmetic follows IEEE 754 (no panic for any input); inside the coordinate
+    /// contract (|x| ≤ `MAX_COORDINATE`, so squares stay below 10³⁰⁴) every product, length
+    /// and normal is finite.
+    #[test]
+    fn vectors_never_panic(a in proptest::array::uniform3(wild()), b in proptest::array::uniform3(wild())) {
+        let (u, v) = (Vector3::from_array(a), Vector3::from_fn(|i| b[i]));
+        let inside = u.amax() <= MAX_COORDINATE && v.amax() <= MAX_COORDINATE
+            && u.is_finite() && v.is_finite();
+        let mut w = Vector3::repeat(a[0]);
+        w.as_mut_array()[1] = b[1];
+        for x in w.iter_mut() {
+            *x = x.abs();
+        }
+        let _ = (w.to_array(), w.as_array(), w.as_slice(), u.abs(), u.inf(&v), u.sup(&v));
+        let products = [u.dot(&v), u.norm_squared(), u.norm(), u.xy().perp(&v.xy()), u.z()];
+        let vectors = [u.cross(&v), u.component_mul(&v), u.zip_map(&v, f64::max)];
+        if inside {
+            prop_assert!(products.iter().all(|x| x.is_finite()));
+            prop_assert!(vectors.iter().all(Vector3::is_finite));
+            if let Some(n) = u.try_normalize(0.0) {
+                prop_assert!(n.is_finite() && (n.norm() - 1.0).abs() < 1e-12);
+                prop_assert_eq!(n, u.normalize());
+            }
+        }
+    }
+
+    /// Slices, owned points and clamped evaluation behave like `new`, `points` and `eval`.
+    #[test]
+    fn slice_constructors_and_clamped_evaluation(pts in wild_points(), t in wild()) {
+        let from_slice = BezierCurve::from_slice(&pts);
+        prop_assert_eq!(&from_slice, &BezierCurve::new(pts.clone()));
+        if let Ok(c) = from_slice {
+            let p = c.eval_clamped(t);
+            prop_assert!(p.is_finite());
+            if let Ok(q) = c.eval(t) {
+                prop_assert_eq!(p, q);
+            }
+            prop_assert_eq!(c.degree() + 1, pts.len());
+            prop_assert_eq!((p.x(), p.y()), (p[0], p[1]));
+            prop_assert_eq!(c.clone().into_points(), pts);
+        }
+    }
+}
+
+/// glam's vectors with wild coordinates: a curve or an error, and the curve converts back.
+#[cfg(feature = "glam")]
+#[test]
+fn glam_points_never_panic() {
+    use glam::{DVec2, DVec3};
+    for x in [f64::NAN, f64::INFINITY, 1e300, MAX_COORDINATE, 0.5] {
+        let flat = [DVec2::new(0.0, 0.0), DVec2::new(x, 1.0)];
+        if let Ok(c) = BezierCurve::<2>::from_dvec2(&flat) {
+            assert_eq!(c.to_dvec2(), flat);
+        }
+        let space = [DVec3::new(0.0, 0.0, 0.0), DVec3::new(x, 1.0, 2.0)];
+        if let Ok(c) = BezierCurve::<3>::from_dvec3(&space) {
+            assert_eq!(c.to_dvec3(), space);
+        }
+    }
+}
+
+/// Every public function and method of the crate is called above (the test helpers of the
+/// `proptest-support` feature aside): a new one fails here until it joins this suite.
+#[test]
+fn every_public_function_is_called_in_this_suite() {
+    let sources = bez_core::proptest_support::crate_sources(env!("CARGO_MANIFEST_DIR"));
+    let sources: Vec<(&str, &str)> = sources
+        .iter()
+        .filter(|(file, _)| file != "proptest_support.rs")
+        .map(|(f, t)| (f.as_str(), t.as_str()))
+        .collect();
+    let uncalled = bez_core::proptest_support::uncalled_in_suite(
+        include_str!("../src/lib.rs"),
+        &sources,
+        include_str!("no_panic.rs"),
+    );
+    assert!(
+        uncalled.is_empty(),
+        "not called by this suite: {uncalled:?}"
+    );
 }
 
 /// Every item the crate re-exports is exercised above (a new public item fails here until it

@@ -54,6 +54,10 @@ proptest! {
         let _ = corner_cut_ratio(n, k, lambda);
         if let Ok(r) = LambdaRange::new(n) {
             prop_assert!(r.min().is_finite() && r.max().is_finite());
+            let (num, den) = r.min_fraction();
+            prop_assert!(den > 0);
+            prop_assert_eq!(-(num as f64) / (den as f64), r.min());
+            prop_assert!(r.binding_index() <= n);
             let _ = r.check(lambda);
             prop_assert_eq!(lambda_range(n).unwrap(), r);
         }
@@ -63,6 +67,7 @@ proptest! {
             if let Ok(v) = b.eval(k, t) { prop_assert!(v.is_finite()); }
             if let Ok(v) = b.derivative(k, t, order) { prop_assert!(v.is_finite()); }
             if let Ok(c) = b.bernstein_coefficients(k) { prop_assert!(c.iter().all(|x| x.is_finite())); }
+            if b.n() < 10_000 { prop_assert!(b.ratios().iter().all(|x| x.is_finite())); }
             let mut row = vec![0.0; b.n() + 1];
             if b.row(t, &mut row).is_ok() { prop_assert!(row.iter().all(|x| x.is_finite())); }
             if b.n() < 200 && let Ok(r) = b.eval_by_recurrence(t) {
@@ -84,6 +89,15 @@ proptest! {
             if let Ok(l) = a.arc_length(1e-6) { prop_assert!(l.is_finite()); }
             let _ = a.reverse();
             let _ = a.with_lambda(lb);
+            let mut edited = a.clone();
+            if edited.set_lambda(lb).is_ok() {
+                prop_assert_eq!(edited.lambda(), lb);
+            }
+            if let Ok(moved) = a.map_points(|x| *x * 2.0) {
+                prop_assert!(moved.points().iter().all(finite));
+            }
+            prop_assert_eq!(&LambdaBezierCurve::from_slice(&p, la).unwrap(), a);
+            prop_assert!(a.clone().into_bezier().points().iter().all(finite));
         }
         if let (Ok(a), Ok(b)) = (&a, &b) {
             let c: Continuity = continuity(a, b, 1e-9);
@@ -110,6 +124,13 @@ proptest! {
         let rows: Vec<Vec<bez_core::Vector3>> = pts.chunks(cols).map(<[_]>::to_vec).collect();
         if let Ok(s) = LambdaBezierSurface::new(rows, lu, lv) {
             if let Ok(x) = s.eval(u, v) { prop_assert!(x.is_finite()); }
+            prop_assert_eq!((s.n_u() + 1, s.n_v() + 1), (s.rows().len(), s.rows()[0].len()));
+            prop_assert_eq!((s.lambda_u(), s.lambda_v()), (lu, lv));
+            prop_assert!(s.as_bezier().points().iter().all(bez_core::Vector3::is_finite));
+            let mut edited = s.clone();
+            if edited.set_lambdas(lv, lu).is_ok() {
+                prop_assert_eq!((edited.lambda_u(), edited.lambda_v()), (lv, lu));
+            }
             if let Ok(x) = s.eval_partial(u, v, 1, 2) { prop_assert!(x.is_finite()); }
             if let Ok(d) = s.partial(2, 1) { prop_assert!(d.points().iter().all(bez_core::Vector3::is_finite)); }
             for join in [PatchJoin::C1, PatchJoin::G1] {
@@ -159,6 +180,26 @@ fn basis_degrees_above_the_kernel_limit_are_errors() {
         assert!(LambdaBasis::new_unrestricted(n, 0.0).is_err());
     }
     assert!(LambdaBasis::new(bez_core::MAX_DEGREE - 1, 0.0).is_ok());
+}
+
+/// Every public function and method of the crate is called above (a new one fails here until
+/// it joins this suite).
+#[test]
+fn every_public_function_is_called_in_this_suite() {
+    let sources = bez_core::proptest_support::crate_sources(env!("CARGO_MANIFEST_DIR"));
+    let sources: Vec<(&str, &str)> = sources
+        .iter()
+        .map(|(f, t)| (f.as_str(), t.as_str()))
+        .collect();
+    let uncalled = bez_core::proptest_support::uncalled_in_suite(
+        include_str!("../src/lib.rs"),
+        &sources,
+        include_str!("no_panic.rs"),
+    );
+    assert!(
+        uncalled.is_empty(),
+        "not called by this suite: {uncalled:?}"
+    );
 }
 
 /// Every item the crate re-exports is exercised above (a new public item fails here until it

@@ -15,6 +15,7 @@ mod pde_bezier;
 mod subdiv_fit;
 mod subdiv_fit_kurbo;
 pub(crate) mod subdiv_fit_scipy;
+mod suites;
 
 use crate::DynError;
 use crate::tables::Table;
@@ -37,7 +38,8 @@ pub(crate) struct Paper {
 const PAPERS: &[Paper] = &[
     Paper {
         name: "bez-core",
-        tables: None,
+        // The coverage of every crate's adversarial suite.
+        tables: Some(suites::tables),
         figures: Some(bez_core::figures),
     },
     Paper {

@@ -17,7 +17,7 @@ pub struct FeaturePoint {
 
 /// Angle between the unit vectors `a/|a|` and `b/|b|`, accurate for small and large angles
 /// (`2 atan2(|â − b̂|, |â + b̂|)`).
-fn angle_between<const D: usize>(a: &Vector<D>, b: &Vector<D>) -> f64 {
+pub(crate) fn angle_between<const D: usize>(a: &Vector<D>, b: &Vector<D>) -> f64 {
     let (na, nb) = (a.norm(), b.norm());
     if na == 0.0 || nb == 0.0 {
         return 0.0;

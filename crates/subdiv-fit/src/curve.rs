@@ -1,7 +1,7 @@
 //! Cubic B-spline subdivision curves with sharp vertices (Sec. 2.1) and their exact
 //! evaluation (Sec. 2.2).
 
-use bez_core::{BezierCurve, Vector};
+use bez_core::{BezierCurve, MAX_COORDINATE, Vector};
 
 use crate::SubdivFitError;
 use crate::bspline::{bspline_basis, bspline_basis_d1, bspline_basis_d2, bspline_to_bezier};
@@ -98,7 +98,9 @@ impl<const D: usize> SubdivCurve<D> {
     ///
     /// # Errors
     /// [`SubdivFitError::TooFewPoints`], [`SubdivFitError::NonFinite`],
-    /// [`SubdivFitError::FlagCount`].
+    /// [`SubdivFitError::FlagCount`]; [`SubdivFitError::Core`] with
+    /// [`CoordinateOutOfRange`](bez_core::CoreError::CoordinateOutOfRange) for a coordinate beyond
+    /// ±`MAX_COORDINATE`.
     pub fn new(
         points: Vec<Vector<D>>,
         mut sharp: Vec<bool>,
@@ -118,9 +120,7 @@ impl<const D: usize> SubdivCurve<D> {
                 points: points.len(),
             });
         }
-        if let Some(index) = points.iter().position(|p| !p.iter().all(|c| c.is_finite())) {
-            return Err(SubdivFitError::NonFinite { index });
-        }
+        check_points(&points, MAX_COORDINATE)?;
         if !closed {
             sharp[0] = true;
             let last = sharp.len() - 1;
@@ -211,13 +211,36 @@ impl<const D: usize> SubdivCurve<D> {
     }
 
     /// `levels` levels of refinement.
-    #[must_use]
-    pub fn refine_levels(&self, levels: usize) -> Self {
+    ///
+    /// # Errors
+    /// [`SubdivFitError::TooLarge`] when the refined polygon would have more than
+    /// [`MAX_FIT_POINTS`](crate::MAX_FIT_POINTS) vertices (checked before any refinement: each
+    /// level doubles the edges).
+    pub fn refine_levels(&self, levels: usize) -> Result<Self, SubdivFitError> {
+        let max = crate::MAX_FIT_POINTS;
+        let edges = self.segment_count();
+        let open_end = usize::from(!self.is_closed());
+        let fits = u32::try_from(levels)
+            .ok()
+            .and_then(|l| edges.checked_mul(1usize.checked_shl(l)?))
+            .and_then(|e| e.checked_add(open_end))
+            .filter(|&count| count <= max);
+        if fits.is_none() {
+            return Err(SubdivFitError::TooLarge {
+                name: "refined vertices",
+                requested: edges.saturating_mul(
+                    1usize
+                        .checked_shl(u32::try_from(levels).unwrap_or(u32::MAX))
+                        .unwrap_or(usize::MAX),
+                ),
+                max,
+            });
+        }
         let mut c = self.clone();
         for _ in 0..levels {
             c = c.refine();
         }
-        c
+        Ok(c)
     }
 
     /// The limit position of vertex `i` (the limit mask):
@@ -381,6 +404,25 @@ impl<const D: usize> SubdivCurve<D> {
             .map(|i| self.segment_bezier(i))
             .collect()
     }
+}
+
+/// Every coordinate finite ([`SubdivFitError::NonFinite`]) and within ±`max`
+/// (bez-core's [`CoordinateOutOfRange`](bez_core::CoreError::CoordinateOutOfRange)).
+pub(crate) fn check_points<const D: usize>(
+    points: &[Vector<D>],
+    max: f64,
+) -> Result<(), SubdivFitError> {
+    for (index, p) in points.iter().enumerate() {
+        for &value in p.iter() {
+            if !value.is_finite() {
+                return Err(SubdivFitError::NonFinite { index });
+            }
+            if value.abs() > max {
+                return Err(bez_core::CoreError::CoordinateOutOfRange { index, value, max }.into());
+            }
+        }
+    }
+    Ok(())
 }
 
 fn check_unit(u: f64) -> Result<(), SubdivFitError> {

@@ -1,6 +1,8 @@
 //! The crate's error type.
 
-use bez_core::CoreError;
+use bez_core::{CoreError, Vector};
+
+use crate::{Closure, SubdivCurve};
 
 /// Everything that can go wrong when building, evaluating or fitting a subdivision curve.
 #[derive(Debug, Clone, PartialEq, thiserror::Error)]
@@ -65,6 +67,15 @@ pub enum SubdivFitError {
         /// The value given.
         value: f64,
     },
+    /// The tolerance is below what the data's coordinates resolve (16 units in the last place of
+    /// the largest coordinate): the loop would insert points until rounding decides.
+    #[error("tolerance {tolerance} is below {floor}, 16 ulps of the largest coordinate")]
+    ToleranceBelowPrecision {
+        /// The tolerance given.
+        tolerance: f64,
+        /// The smallest tolerance accepted for these data.
+        floor: f64,
+    },
     /// An option of the fit is out of its range.
     #[error("option {name} = {value} is invalid: {reason}")]
     InvalidOption {
@@ -86,9 +97,82 @@ pub enum SubdivFitError {
     NoConvergence {
         /// Rounds performed.
         rounds: usize,
-        /// Largest remaining error.
+        /// Largest remaining error (of the last round).
         max_error: f64,
         /// The tolerance asked for.
         tolerance: f64,
+        /// The curve of the round with the smallest error, and that error.
+        best: Box<BestCurve>,
     },
+    /// A size the caller chose is above its limit.
+    #[error("{name}: {requested} requested, at most {max} accepted")]
+    TooLarge {
+        /// What was too large.
+        name: &'static str,
+        /// The size requested.
+        requested: usize,
+        /// The largest size accepted.
+        max: usize,
+    },
+    /// A given corner index is not a data index.
+    #[error("corner index {index} is outside the {points} data points")]
+    CornerOutOfRange {
+        /// The index given.
+        index: usize,
+        /// Number of data points.
+        points: usize,
+    },
+}
+
+/// The best curve of a fit that did not converge ([`SubdivFitError::NoConvergence`]), with its
+/// error. Stored without its dimension in the type, so the error type stays one for all
+/// dimensions; [`BestCurve::curve`] gives it back as a [`SubdivCurve`].
+#[derive(Debug, Clone, PartialEq)]
+#[non_exhaustive]
+pub struct BestCurve {
+    coordinates: Vec<f64>,
+    dimension: usize,
+    sharp: Vec<bool>,
+    closure: Closure,
+    max_error: f64,
+}
+
+impl BestCurve {
+    pub(crate) fn new<const D: usize>(curve: &SubdivCurve<D>, max_error: f64) -> Self {
+        Self {
+            coordinates: curve
+                .points()
+                .iter()
+                .flat_map(|p| p.iter().copied())
+                .collect(),
+            dimension: D,
+            sharp: curve.sharp().to_vec(),
+            closure: curve.closure(),
+            max_error,
+        }
+    }
+
+    /// The curve, if its points have `D` coordinates (the dimension of the data fitted).
+    #[must_use]
+    pub fn curve<const D: usize>(&self) -> Option<SubdivCurve<D>> {
+        if D != self.dimension || D == 0 {
+            return None;
+        }
+        let points = self
+            .coordinates
+            .chunks_exact(D)
+            .map(|c| {
+                let mut p = [0.0; D];
+                p.copy_from_slice(c);
+                Vector::<D>::from(p)
+            })
+            .collect();
+        SubdivCurve::new(points, self.sharp.clone(), self.closure).ok()
+    }
+
+    /// Its largest error (of the measure the fit drives below the tolerance).
+    #[must_use]
+    pub fn max_error(&self) -> f64 {
+        self.max_error
+    }
 }

@@ -6,10 +6,14 @@ use bez_core::Vector;
 
 use crate::banded::CyclicBand;
 use crate::bspline::bspline_basis;
+use crate::chord::ChordLengths;
+use crate::corners::detect_corners;
 use crate::curvature::feature_points;
 use crate::curve::{Closure, combine};
 use crate::distance::{foot_point_ctrl, point_polyline_distance};
-use crate::insertion::{ChordLengths, Verdict, insert_points, segment_range};
+use crate::error::BestCurve;
+use crate::insertion::{Verdict, insert_points, segment_range};
+use crate::seeding::seed;
 use crate::tridiagonal::solve_tridiagonal;
 use crate::{SubdivCurve, SubdivFitError};
 
@@ -50,6 +54,40 @@ pub enum Insertion {
     Bisect,
 }
 
+/// Where the initial fitting points come from.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
+#[non_exhaustive]
+pub enum Seeding {
+    /// The paper's (Sec. 4.2): every local maximum of the discrete curvature and every point whose
+    /// edge angle is below [`FitOptions::sharp_angle`] ([`crate::feature_points`]). On dense,
+    /// quantized or noisy data these are maxima of the noise.
+    CurvatureMaxima,
+    /// Corners found at the feature scale ([`crate::scaled_corners`]), and between them regular
+    /// points at equal chord-length steps, as many as an interpolation error estimate asks for at
+    /// the tolerance (a circle at relative tolerance 10⁻³ gets 12). Independent of the sampling
+    /// density, insensitive to noise below a quarter of the tolerance.
+    Scaled,
+}
+
+/// The largest number of data points [`fit`] accepts: 2²⁴ (bez-core's `MAX_SAMPLES`).
+pub const MAX_FIT_POINTS: usize = bez_core::MAX_SAMPLES;
+
+/// The largest absolute data coordinate [`fit`] accepts: bez-core's `MAX_COORDINATE` / 8
+/// (10¹⁵² / 8), leaving room for control points that overshoot the data and for their Bézier
+/// form.
+pub const MAX_DATA_COORDINATE: f64 = bez_core::MAX_COORDINATE / 8.0;
+
+/// The largest [`FitOptions::samples_per_segment`]: 1,024.
+pub const MAX_SAMPLES_PER_SEGMENT: usize = 1024;
+
+/// The largest [`FitOptions::max_rounds`]: 1,000 (bisection needs about log2 of the longest
+/// failing segment, at most 24 for [`MAX_FIT_POINTS`] points).
+pub const MAX_ROUNDS: usize = 1000;
+
+/// The largest [`FitOptions::feature_scale`]: 10⁶ tolerances.
+pub const MAX_FEATURE_SCALE: f64 = 1e6;
+
 /// Options of [`fit`].
 #[derive(Debug, Clone, Copy, PartialEq)]
 #[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
@@ -57,23 +95,34 @@ pub enum Insertion {
 pub struct FitOptions {
     /// Maximum allowed error δ (Sec. 5), in data units.
     pub tolerance: f64,
-    /// A data point is sharp when the angle between its two edges is below this (radians).
-    /// Default 140° (a turn of more than 40°): a smooth curve sampled at spacing h with radius of
-    /// curvature r turns by about h / r per point, so only features with r < 1.4 h, not resolved by
-    /// the sampling, are taken for corners.
+    /// A corner is a point where the angle between the incoming and the outgoing direction is
+    /// below this (radians), i.e. where the curve turns by more than `π − sharp_angle`.
+    /// With [`Seeding::Scaled`] the directions are chords at the feature scale and the turn must
+    /// also be scale-invariant ([`crate::scaled_corners`]); default 160° (a turn of more than 20°).
+    /// With [`Seeding::CurvatureMaxima`] they are the two data edges (the paper's rule); the
+    /// paper's configuration uses 140° (a smooth curve sampled at spacing h with radius of
+    /// curvature r turns by about h / r per point, so only features with r < 1.4 h, not resolved
+    /// by the sampling, are taken for corners). 0 finds no corner.
     pub sharp_angle: f64,
+    /// The feature scale σ as a multiple of the tolerance (σ = `feature_scale · tolerance`, in
+    /// data units): the arc length over which corners are measured and the shortest step at which
+    /// turning is counted. Default 6. Noise up to about σ / 24 does not create corners.
+    pub feature_scale: f64,
+    /// Initial fitting points. Default [`Seeding::Scaled`].
+    pub seeding: Seeding,
     /// Curvature floor relative to the bounding-box diagonal L: maxima with `K · L` at or below it
     /// are ignored. Default 1e-6 (a radius of curvature above a million diagonals counts as straight).
     pub curvature_floor: f64,
     /// Relative prominence a curvature maximum needs over its predecessor. Default 1e-9.
     pub prominence: f64,
-    /// Maximum number of insertion rounds. Default 100.
+    /// Maximum number of insertion rounds. Default 100, at most [`MAX_ROUNDS`].
     pub max_rounds: usize,
     /// Error measure. Default [`ErrorMeasure::TwoSided`].
     pub measure: ErrorMeasure,
     /// Solver. Default [`FitMode::Interpolate`].
     pub mode: FitMode,
-    /// Samples per segment for the curve-to-data distance. Default 32.
+    /// Samples per segment for the curve-to-data distance. Default 32, at most
+    /// [`MAX_SAMPLES_PER_SEGMENT`].
     pub samples_per_segment: usize,
     /// Insertion rule. Default [`Insertion::Bisect`].
     pub insertion: Insertion,
@@ -85,7 +134,9 @@ impl FitOptions {
     pub fn new(tolerance: f64) -> Self {
         Self {
             tolerance,
-            sharp_angle: 140f64.to_radians(),
+            sharp_angle: 160f64.to_radians(),
+            feature_scale: 6.0,
+            seeding: Seeding::Scaled,
             curvature_floor: 1e-6,
             prominence: 1e-9,
             max_rounds: 100,
@@ -96,11 +147,14 @@ impl FitOptions {
         }
     }
 
-    /// The paper's configuration: one-sided error, interpolation.
+    /// The paper's configuration: initial points at the curvature maxima and at edge angles
+    /// below 140°, one-sided error, interpolation.
     #[must_use]
     pub fn paper(tolerance: f64) -> Self {
         Self {
             measure: ErrorMeasure::DataToCurve,
+            seeding: Seeding::CurvatureMaxima,
+            sharp_angle: 140f64.to_radians(),
             ..Self::new(tolerance)
         }
     }
@@ -116,6 +170,20 @@ impl FitOptions {
     #[must_use]
     pub fn with_sharp_angle(mut self, value: f64) -> Self {
         self.sharp_angle = value;
+        self
+    }
+
+    /// With `feature_scale` set to `value` (the feature scale in tolerances).
+    #[must_use]
+    pub fn with_feature_scale(mut self, value: f64) -> Self {
+        self.feature_scale = value;
+        self
+    }
+
+    /// With `seeding` set to `value` (where the initial fitting points come from).
+    #[must_use]
+    pub fn with_seeding(mut self, value: Seeding) -> Self {
+        self.seeding = value;
         self
     }
 
@@ -215,7 +283,8 @@ impl<const D: usize> Fit<D> {
     }
 }
 
-/// Validates data: finite, no coinciding consecutive points, enough points.
+/// Validates data: few enough and enough points, finite, within bez-core's coordinate range, no
+/// coinciding consecutive points.
 fn validate<const D: usize>(data: &[Vector<D>], closed: bool) -> Result<(), SubdivFitError> {
     let needed = 3;
     if data.len() < needed {
@@ -224,9 +293,14 @@ fn validate<const D: usize>(data: &[Vector<D>], closed: bool) -> Result<(), Subd
             needed,
         });
     }
-    if let Some(index) = data.iter().position(|p| !p.iter().all(|c| c.is_finite())) {
-        return Err(SubdivFitError::NonFinite { index });
+    if data.len() > MAX_FIT_POINTS {
+        return Err(SubdivFitError::TooLarge {
+            name: "data points",
+            requested: data.len(),
+            max: MAX_FIT_POINTS,
+        });
     }
+    crate::curve::check_points(data, MAX_DATA_COORDINATE)?;
     let n = data.len();
     let pairs = if closed { n } else { n - 1 };
     for i in 0..pairs {
@@ -242,12 +316,34 @@ fn validate_options(o: &FitOptions) -> Result<(), SubdivFitError> {
     if !(o.tolerance.is_finite() && o.tolerance > 0.0) {
         return Err(SubdivFitError::InvalidTolerance { value: o.tolerance });
     }
-    let checks: [(&'static str, f64, bool, &'static str); 4] = [
+    for (name, requested, max) in [
+        ("max_rounds", o.max_rounds, MAX_ROUNDS),
+        (
+            "samples_per_segment",
+            o.samples_per_segment,
+            MAX_SAMPLES_PER_SEGMENT,
+        ),
+    ] {
+        if requested > max {
+            return Err(SubdivFitError::TooLarge {
+                name,
+                requested,
+                max,
+            });
+        }
+    }
+    let checks: [(&'static str, f64, bool, &'static str); 5] = [
         (
             "sharp_angle",
             o.sharp_angle,
             (0.0..=std::f64::consts::PI).contains(&o.sharp_angle),
             "must lie in [0, π]",
+        ),
+        (
+            "feature_scale",
+            o.feature_scale,
+            (0.0..=MAX_FEATURE_SCALE).contains(&o.feature_scale),
+            "must lie in [0, MAX_FEATURE_SCALE]",
         ),
         (
             "curvature_floor",
@@ -280,49 +376,208 @@ fn validate_options(o: &FitOptions) -> Result<(), SubdivFitError> {
     Ok(())
 }
 
+/// The tolerance must be at least 16 ulps of the largest coordinate.
+fn check_precision<const D: usize>(
+    data: &[Vector<D>],
+    tolerance: f64,
+) -> Result<(), SubdivFitError> {
+    let largest = data
+        .iter()
+        .flat_map(|p| p.iter().map(|c| c.abs()))
+        .fold(0.0, f64::max);
+    let floor = 16.0 * largest * f64::EPSILON;
+    if tolerance < floor {
+        return Err(SubdivFitError::ToleranceBelowPrecision { tolerance, floor });
+    }
+    Ok(())
+}
+
+/// The feature scale σ in data units.
+fn sigma(options: &FitOptions) -> f64 {
+    options.feature_scale * options.tolerance
+}
+
+/// The corners [`fit`] would make sharp with [`Seeding::Scaled`]: data indices, increasing, found
+/// at the feature scale σ = `feature_scale · tolerance` with the corner angle
+/// `π − sharp_angle` (see the module documentation of the detection in the crate docs). The ends
+/// of open data are not listed (they are always sharp).
+///
+/// ```
+/// use subdiv_fit::{Closure, FitOptions, Vector2, scaled_corners};
+///
+/// // A square sampled densely, its corners at indices 0, 100, 200, 300, with noise of 1e-4.
+/// let corners = [(0.0, 0.0), (1.0, 0.0), (1.0, 1.0), (0.0, 1.0)];
+/// let data: Vec<Vector2> = (0..400)
+///     .map(|k| {
+///         let ((x0, y0), (x1, y1)) = (corners[k / 100], corners[(k / 100 + 1) % 4]);
+///         let s = (k % 100) as f64 / 100.0;
+///         let wobble = 1e-4 * ((k * 7919) % 13) as f64 / 13.0;
+///         Vector2::new(x0 + s * (x1 - x0) + wobble, y0 + s * (y1 - y0) - wobble)
+///     })
+///     .collect();
+/// let found = scaled_corners(&data, Closure::Closed, &FitOptions::new(1e-3))?;
+/// assert_eq!(found, [0, 100, 200, 300]);
+/// # Ok::<(), subdiv_fit::SubdivFitError>(())
+/// ```
+///
+/// # Errors
+/// As [`fit`] for invalid data or options.
+pub fn scaled_corners<const D: usize>(
+    data: &[Vector<D>],
+    closure: Closure,
+    options: &FitOptions,
+) -> Result<Vec<usize>, SubdivFitError> {
+    let closed = closure.is_closed();
+    validate(data, closed)?;
+    validate_options(options)?;
+    let chords = ChordLengths::robust(data, closed, anchor_spacing(options));
+    Ok(scaled_corners_of(data, &chords, closed, &[], options))
+}
+
+/// The anchor spacing of the noise-robust chord length, σ / 4.
+fn anchor_spacing(options: &FitOptions) -> f64 {
+    0.25 * sigma(options)
+}
+
+fn scaled_corners_of<const D: usize>(
+    data: &[Vector<D>],
+    chords: &ChordLengths,
+    closed: bool,
+    given: &[usize],
+    options: &FitOptions,
+) -> Vec<usize> {
+    detect_corners(
+        data,
+        chords,
+        closed,
+        given,
+        sigma(options),
+        std::f64::consts::PI - options.sharp_angle,
+    )
+}
+
 /// Fits a subdivision curve with sharp vertices to ordered data (Secs. 3–5).
 ///
-/// 1. Initial fitting points: curvature maxima and sharp points ([`crate::feature_points`]); for closed
+/// 1. Initial fitting points ([`FitOptions::seeding`]): by default corners at the feature scale
+///    and evenly spaced regular points between them ([`Seeding::Scaled`]); in the paper's
+///    configuration the curvature maxima and sharp points ([`crate::feature_points`]); for closed
 ///    data with fewer than 3, the largest gaps are split at their middle index.
 /// 2. Control points from `M P = Q` (eq. 4): a sharp fitting point gives `p_i = q_i`, a regular one
 ///    `(p_{i−1} + 4 p_i + p_{i+1}) / 6 = q_i`, a (cyclic) tridiagonal system solved in O(k) by
 ///    Thomas's algorithm with a Sherman–Morrison corner correction (the matrix is strictly diagonally
-///    dominant in its regular rows, so it is never singular in exact arithmetic).
+///    dominant in its regular rows, so it is never singular in exact arithmetic). In
+///    [`FitMode::LeastSquares`] the regular control points are then re-solved by least squares over
+///    all data (banded normal equations, O(n + k) time and memory).
 /// 3. Errors per segment: each data point between two fitting points against that segment only, by
 ///    Newton on eq. (6) from the chord-length parameter; with [`ErrorMeasure::TwoSided`] also the
 ///    distance of dense curve samples to the segment's data polyline.
 /// 4. Every segment whose error exceeds the tolerance gets a new regular fitting point, chosen by
 ///    [`FitOptions::insertion`] (by default the chord-length middle); repeat.
 ///
+/// Every option and the data size are checked before any work ([`MAX_FIT_POINTS`],
+/// [`MAX_ROUNDS`], [`MAX_SAMPLES_PER_SEGMENT`], [`MAX_FEATURE_SCALE`]), and the tolerance against
+/// the precision of the coordinates ([`SubdivFitError::ToleranceBelowPrecision`]).
+///
 /// # Errors
 /// Invalid data or options (typed), [`SubdivFitError::SingularSystem`],
-/// [`SubdivFitError::NoConvergence`] when the round cap is hit or no segment can take another point.
+/// [`SubdivFitError::NoConvergence`] when the round cap is hit or no segment can take another
+/// point (it carries the last curve and its error).
 pub fn fit<const D: usize>(
     data: &[Vector<D>],
     closure: Closure,
     options: &FitOptions,
 ) -> Result<Fit<D>, SubdivFitError> {
+    fit_with_corners(data, closure, &[], options)
+}
+
+/// [`fit`] with known corners: the data points at the indices `corners` are sharp fitting points
+/// (kept sharp, interpolated exactly), in addition to the corners [`Seeding::Scaled`] detects away
+/// from them (set [`FitOptions::sharp_angle`] to 0 to detect none). With
+/// [`Seeding::CurvatureMaxima`] they are added to the paper's initial points.
+///
+/// ```
+/// use subdiv_fit::{Closure, FitOptions, Vector2, fit_with_corners};
+///
+/// // A half disc: a semicircle closed by its diameter, corners at the diameter's ends.
+/// let mut data: Vec<Vector2> = (0..=60)
+///     .map(|k| {
+///         let t = std::f64::consts::PI * k as f64 / 60.0;
+///         Vector2::new(t.cos(), t.sin())
+///     })
+///     .collect();
+/// data.extend((1..20).map(|k| Vector2::new(-1.0 + k as f64 / 10.0, 0.0)));
+/// let opts = FitOptions::new(1e-3).with_sharp_angle(0.0); // only the corners given
+/// let f = fit_with_corners(&data, Closure::Closed, &[0, 60], &opts)?;
+/// let sharp: Vec<usize> = (0..f.fitting.len())
+///     .filter(|&j| f.curve.sharp()[j])
+///     .map(|j| f.fitting[j])
+///     .collect();
+/// assert_eq!(sharp, [0, 60]);
+/// # Ok::<(), subdiv_fit::SubdivFitError>(())
+/// ```
+///
+/// # Errors
+/// As [`fit`], and [`SubdivFitError::CornerOutOfRange`] for a corner index outside the data.
+pub fn fit_with_corners<const D: usize>(
+    data: &[Vector<D>],
+    closure: Closure,
+    corners: &[usize],
+    options: &FitOptions,
+) -> Result<Fit<D>, SubdivFitError> {
     let closed = closure.is_closed();
     validate(data, closed)?;
     validate_options(options)?;
+    check_precision(data, options.tolerance)?;
     let n = data.len();
-    let features = feature_points(
-        data,
-        closed,
-        options.sharp_angle,
-        options.curvature_floor,
-        options.prominence,
-    );
-    let mut fitting: Vec<(usize, bool)> = features.iter().map(|f| (f.index, f.sharp)).collect();
+    if let Some(&index) = corners.iter().find(|&&c| c >= n) {
+        return Err(SubdivFitError::CornerOutOfRange { index, points: n });
+    }
+    let mut given = corners.to_vec();
+    given.sort_unstable();
+    given.dedup();
+    let chords = ChordLengths::robust(data, closed, anchor_spacing(options));
+    let mut fitting: Vec<(usize, bool)> = match options.seeding {
+        Seeding::CurvatureMaxima => {
+            let mut f: Vec<(usize, bool)> = feature_points(
+                data,
+                closed,
+                options.sharp_angle,
+                options.curvature_floor,
+                options.prominence,
+            )
+            .iter()
+            .map(|f| (f.index, f.sharp))
+            .collect();
+            for &c in &given {
+                match f.binary_search_by_key(&c, |x| x.0) {
+                    Ok(pos) => f[pos].1 = true,
+                    Err(pos) => f.insert(pos, (c, true)),
+                }
+            }
+            f
+        }
+        Seeding::Scaled => {
+            let found = scaled_corners_of(data, &chords, closed, &given, options);
+            seed(
+                data,
+                &chords,
+                closed,
+                &found,
+                sigma(options),
+                options.tolerance,
+            )
+        }
+    };
     if closed {
         while fitting.len() < 3 {
             split_largest_gap(&mut fitting, n);
         }
     }
     let initial: Vec<usize> = fitting.iter().map(|f| f.0).collect();
-    let chords = ChordLengths::new(data, closed);
     let mut reports = Vec::new();
-    for round in 0..=options.max_rounds {
+    let mut best: Option<(SubdivCurve<D>, f64)> = None;
+    let mut round = 0;
+    loop {
         let curve = solve_curve(data, &fitting, closed, options.mode)?;
         let assessment = assess(data, &fitting, &curve, closed, options);
         reports.push(RoundReport {
@@ -344,6 +599,9 @@ pub fn fit<const D: usize>(
                 reports,
             });
         }
+        if best.as_ref().is_none_or(|b| worst < b.1) {
+            best = Some((curve.clone(), worst));
+        }
         if round == options.max_rounds
             || insert_points(
                 &mut fitting,
@@ -357,14 +615,14 @@ pub fn fit<const D: usize>(
                 rounds: round,
                 max_error: worst,
                 tolerance: options.tolerance,
+                best: Box::new(match &best {
+                    Some((c, e)) => BestCurve::new(c, *e),
+                    None => BestCurve::new(&curve, worst),
+                }),
             });
         }
+        round += 1;
     }
-    Err(SubdivFitError::NoConvergence {
-        rounds: options.max_rounds,
-        max_error: f64::INFINITY,
-        tolerance: options.tolerance,
-    })
 }
 
 fn split_largest_gap(fitting: &mut Vec<(usize, bool)>, n: usize) {
@@ -425,9 +683,14 @@ fn solve_curve<const D: usize>(
     match mode {
         FitMode::Interpolate => Ok(curve),
         FitMode::LeastSquares => {
+            // A least-squares system without enough data for some control point is singular: the
+            // interpolating curve is kept then.
             let mut c = curve;
             for _ in 0..2 {
-                c = least_squares(data, fitting, &c)?;
+                match least_squares(data, fitting, &c) {
+                    Ok(next) => c = next,
+                    Err(_) => break,
+                }
             }
             Ok(c)
         }

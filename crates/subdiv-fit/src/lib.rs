@@ -64,6 +64,8 @@ mod banded;
 mod bspline;
 #[cfg(feature = "paper")]
 pub mod cases;
+mod chord;
+mod corners;
 mod curvature;
 mod curve;
 mod distance;
@@ -72,19 +74,25 @@ pub mod eigen;
 mod error;
 mod fit;
 mod insertion;
+mod seeding;
 mod segment;
 mod svg;
 mod tridiagonal;
 
+pub use crate::bspline::{bspline_basis, bspline_basis_d1, bspline_basis_d2, bspline_to_bezier};
+pub use crate::corners::SCALE_RATIO;
+pub use crate::curvature::{FeaturePoint, discrete_curvature, feature_points, turning_angle};
+pub use crate::curve::{Closure, CurvePoint, SubdivCurve};
+pub use crate::distance::{foot_point, point_polyline_distance};
+pub use crate::error::{BestCurve, SubdivFitError};
+pub use crate::fit::{
+    ErrorMeasure, Fit, FitMode, FitOptions, Insertion, MAX_DATA_COORDINATE, MAX_FEATURE_SCALE,
+    MAX_FIT_POINTS, MAX_ROUNDS, MAX_SAMPLES_PER_SEGMENT, RoundReport, Seeding, fit,
+    fit_with_corners, scaled_corners,
+};
+pub use crate::segment::Segment;
+pub use crate::svg::svg_path;
 pub use bez_core::{Vector, Vector2, Vector3};
-pub use bspline::{bspline_basis, bspline_basis_d1, bspline_basis_d2, bspline_to_bezier};
-pub use curvature::{FeaturePoint, discrete_curvature, feature_points, turning_angle};
-pub use curve::{Closure, CurvePoint, SubdivCurve};
-pub use distance::{foot_point, point_polyline_distance};
-pub use error::SubdivFitError;
-pub use fit::{ErrorMeasure, Fit, FitMode, FitOptions, Insertion, RoundReport, fit};
-pub use segment::Segment;
-pub use svg::svg_path;
 
 /// The README's example, compiled and run with the doctests.
 #[cfg(doctest)]

@@ -27,7 +27,7 @@ fn polygon<const D: usize>(
 /// parameter m / 2^levels, and the curve must pass exactly there.
 #[allow(clippy::unwrap_used, reason = "test helper")]
 fn check_against_refinement<const D: usize>(c: &SubdivCurve<D>, levels: usize, tol: f64) {
-    let r = c.refine_levels(levels);
+    let r = c.refine_levels(levels).unwrap();
     let scale = (1u64 << levels) as f64;
     let max = c.segment_count() as f64;
     for m in 0..r.points().len() {
@@ -134,7 +134,7 @@ fn twelve_levels_of_refinement_converge_to_the_exact_curve() {
     .unwrap();
     check_against_refinement(&c, 12, 1e-12);
     // The refined vertices themselves approach the curve at rate 4^-levels.
-    let r = c.refine_levels(12);
+    let r = c.refine_levels(12).unwrap();
     let worst = (0..r.points().len())
         .map(|m| (r.points()[m] - c.eval(m as f64 / 4096.0).unwrap()).norm())
         .fold(0.0, f64::max);

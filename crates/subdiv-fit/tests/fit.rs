@@ -3,7 +3,7 @@
 use subdiv_fit::cases::{closed_petals, open_wave, rippled_petals};
 use subdiv_fit::{
     ErrorMeasure, FitMode, FitOptions, Insertion, SubdivCurve, SubdivFitError, Vector2, Vector3,
-    discrete_curvature, feature_points, fit, point_polyline_distance,
+    discrete_curvature, feature_points, fit, point_polyline_distance, scaled_corners,
 };
 
 #[allow(clippy::unwrap_used, reason = "test helper")]
@@ -255,11 +255,7 @@ fn converges_cleanly(data: &[Vector2], mode: FitMode, max_rounds: usize) {
         .filter(|&j| f.curve.sharp()[j])
         .map(|j| f.fitting[j])
         .collect();
-    let sharp_initial: Vec<usize> = feature_points(data, true, opts.sharp_angle, 1e-6, 1e-9)
-        .iter()
-        .filter(|p| p.sharp)
-        .map(|p| p.index)
-        .collect();
+    let sharp_initial = scaled_corners(data, subdiv_fit::Closure::Closed, &opts).unwrap();
     assert_eq!(sharp_now, sharp_initial);
 }
 

@@ -66,7 +66,7 @@ pub(crate) fn tables() -> Result<Vec<Table>, DynError> {
 fn fit_table() -> Result<Table, DynError> {
     let mut md = String::from(
         "## subdiv-fit: fitting the test shapes at tolerance 0.01\n\n\
-         Initial fitting points are the curvature maxima (and sharp points); a round inserts fitting points where the error exceeds the tolerance.\n\
+         Initial fitting points: in the paper's configuration the curvature maxima and the points whose edges meet at less than 140°; in the others (`Seeding::Scaled`, the default) the corners found at the feature scale (6 × tolerance) and evenly spaced points between them. A round inserts fitting points where the error exceeds the tolerance.\n\
          The paper's shapes are not published: its rounds (Fig. 4: 64 points, 9 maxima, 4 rounds; Fig. 5: 66 points, 8 maxima, 6 rounds) are for its own data, printed for reference only.\n\n\
          | shape | points | initial fitting points (sharp) | configuration | rounds | control points | max data→curve | RMS data→curve | max curve→data | paper's rounds |\n\
          |---|---|---|---|---|---|---|---|---|---|\n",
@@ -176,18 +176,23 @@ fn polygon(curve: &SubdivCurve<2>) -> Vec<(f64, f64)> {
     p
 }
 
+/// The figures' configuration: the paper's initial points (curvature maxima), two-sided error.
+fn figure_options() -> FitOptions {
+    FitOptions::paper(TOL).with_measure(ErrorMeasure::TwoSided)
+}
+
 /// The curve after round 0 (initial fit) of a fit.
 fn initial_fit(data: &[Vector2], closed: bool) -> Result<(Fit<2>, SubdivCurve<2>), DynError> {
     let f = fit(
         data,
         subdiv_fit::Closure::from_closed(closed),
-        &FitOptions::new(TOL),
+        &figure_options(),
     )?;
     // Round 0 alone: the same initial points with a cap of 0 rounds and a huge tolerance.
     let first = fit(
         data,
         subdiv_fit::Closure::from_closed(closed),
-        &FitOptions::new(TOL).with_tolerance(f64::MAX),
+        &figure_options().with_tolerance(f64::MAX),
     )?;
     Ok((f, first.curve))
 }
@@ -240,7 +245,7 @@ pub(crate) fn figures(dir: &Path) -> Result<Vec<PathBuf>, DynError> {
     let data = closed_petals(1);
     let k = discrete_curvature(&data, true);
     let curv: Vec<(f64, f64)> = k.iter().enumerate().map(|(i, v)| (i as f64, *v)).collect();
-    let f = fit(&data, subdiv_fit::Closure::Closed, &FitOptions::new(TOL))?;
+    let f = fit(&data, subdiv_fit::Closure::Closed, &figure_options())?;
     let maxima: Vec<(f64, f64)> = f.initial.iter().map(|&i| (i as f64, k[i])).collect();
     out.push(
         Plot::new(

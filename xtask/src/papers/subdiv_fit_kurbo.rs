@@ -12,7 +12,7 @@ use std::ops::Range;
 use kurbo::{BezPath, CurveFitSample, ParamCurve, ParamCurveFit, Point, Vec2, fit_to_bezpath_opt};
 use serde_json::{Value, json};
 use subdiv_fit::cases::{closed_petals, open_wave};
-use subdiv_fit::{FitOptions, SubdivCurve, Vector2, feature_points, fit, point_polyline_distance};
+use subdiv_fit::{FitOptions, SubdivCurve, Vector2, fit, point_polyline_distance, scaled_corners};
 
 use super::subdiv_fit::median_ms;
 use crate::DynError;
@@ -77,18 +77,17 @@ impl ParamCurveFit for CatmullRom {
 /// Runs of data between consecutive sharp points (indices inclusive, wrapping for closed data).
 fn runs(data: &[Vector2], closed: bool) -> Vec<Vec<Point>> {
     let n = data.len();
-    let opts = FitOptions::new(0.01);
-    let sharp: Vec<usize> = feature_points(
+    // The corners subdiv-fit makes sharp (and the ends of open data).
+    let mut sharp = scaled_corners(
         data,
-        closed,
-        opts.sharp_angle,
-        opts.curvature_floor,
-        opts.prominence,
+        subdiv_fit::Closure::from_closed(closed),
+        &FitOptions::new(0.01),
     )
-    .iter()
-    .filter(|f| f.sharp)
-    .map(|f| f.index)
-    .collect();
+    .unwrap_or_default();
+    if !closed {
+        sharp.insert(0, 0);
+        sharp.push(n - 1);
+    }
     let pt = |i: usize| Point::from(data[i % n]);
     let mut out = Vec::new();
     let count = if closed { sharp.len() } else { sharp.len() - 1 };

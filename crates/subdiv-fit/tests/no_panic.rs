@@ -1,0 +1,437 @@
+//! Random (including NaN, infinite, huge, empty, one-point and duplicate) inputs to every public
+//! constructor, function and method give `Result`s or values, never panics or unbounded work, and
+//! an `Ok` holding a curve, a point or an error measure never holds a NaN or an infinity.
+#![allow(
+    clippy::unwrap_used,
+    clippy::expect_used,
+    reason = "tests fail loudly on unexpected errors"
+)]
+
+use std::time::{Duration, Instant};
+
+use bez_core::{BezierForm, MAX_COORDINATE};
+use proptest::prelude::*;
+use subdiv_fit::{
+    BestCurve, Closure, CurvePoint, ErrorMeasure, FeaturePoint, Fit, FitMode, FitOptions,
+    Insertion, MAX_DATA_COORDINATE, MAX_FEATURE_SCALE, MAX_FIT_POINTS, MAX_ROUNDS,
+    MAX_SAMPLES_PER_SEGMENT, RoundReport, SCALE_RATIO, Seeding, Segment, SubdivCurve,
+    SubdivFitError, Vector2, Vector3, bspline_basis, bspline_basis_d1, bspline_basis_d2,
+    bspline_to_bezier, discrete_curvature, feature_points, fit, fit_with_corners, foot_point,
+    point_polyline_distance, scaled_corners, svg_path, turning_angle,
+};
+
+fn wild() -> impl Strategy<Value = f64> {
+    prop_oneof![
+        6 => -10.0..10.0f64,
+        1 => Just(f64::NAN),
+        1 => Just(f64::INFINITY),
+        1 => Just(f64::NEG_INFINITY),
+        1 => Just(1e300),
+        1 => Just(-1e300),
+        1 => Just(MAX_COORDINATE),
+        1 => Just(-MAX_COORDINATE),
+        1 => Just(MAX_DATA_COORDINATE),
+        1 => Just(1e-300),
+        1 => Just(0.0),
+        1 => Just(1.0),
+    ]
+}
+
+/// Points with wild coordinates, and runs of repeated points.
+fn wild_points(max: usize) -> impl Strategy<Value = Vec<Vector2>> {
+    proptest::collection::vec(
+        ((wild(), wild()), 1usize..3).prop_map(|((x, y), repeat)| vec![Vector2::new(x, y); repeat]),
+        0..max,
+    )
+    .prop_map(|runs| runs.concat())
+}
+
+/// Data a fit can accept: a few dozen distinct points of a wobbly loop at a random scale and
+/// offset (huge, tiny or ordinary), sometimes with a wild point spliced in.
+fn plausible_data() -> impl Strategy<Value = Vec<Vector2>> {
+    (
+        3usize..60,
+        prop_oneof![
+            Just(1.0),
+            Just(1e-200),
+            Just(1e150),
+            Just(MAX_DATA_COORDINATE),
+            0.01..100.0f64
+        ],
+        -1e3..1e3f64,
+        0.0..0.5f64,
+        proptest::option::of((0usize..60, wild(), wild())),
+    )
+        .prop_map(|(n, scale, offset, wobble, splice)| {
+            let mut pts: Vec<Vector2> = (0..n)
+                .map(|k| {
+                    let t = std::f64::consts::TAU * k as f64 / n as f64;
+                    let r = 1.0 + wobble * (5.0 * t).sin();
+                    Vector2::new(offset + scale * r * t.cos(), scale * r * t.sin())
+                })
+                .collect();
+            if let Some((i, x, y)) = splice {
+                let i = i % n;
+                pts[i] = Vector2::new(x, y);
+            }
+            pts
+        })
+}
+
+fn options() -> impl Strategy<Value = FitOptions> {
+    (
+        (wild(), prop_oneof![wild(), 0.0..=std::f64::consts::PI]),
+        prop_oneof![wild(), 0.0..20.0f64, Just(MAX_FEATURE_SCALE)],
+        (wild(), wild()),
+        prop_oneof![
+            0usize..6,
+            Just(MAX_ROUNDS),
+            Just(MAX_ROUNDS + 1),
+            Just(usize::MAX)
+        ],
+        prop_oneof![
+            0usize..40,
+            Just(MAX_SAMPLES_PER_SEGMENT + 1),
+            Just(1_000_000_000)
+        ],
+        any::<(bool, bool, bool, bool)>(),
+    )
+        .prop_map(
+            |((tol, angle), scale, (floor, prominence), rounds, samples, flags)| {
+                let tol = if tol.is_finite() {
+                    tol.abs().max(1e-12)
+                } else {
+                    tol
+                };
+                FitOptions::new(tol)
+                    .with_sharp_angle(angle)
+                    .with_feature_scale(scale)
+                    .with_curvature_floor(floor)
+                    .with_prominence(prominence)
+                    .with_max_rounds(rounds)
+                    .with_samples_per_segment(samples)
+                    .with_seeding(if flags.0 {
+                        Seeding::Scaled
+                    } else {
+                        Seeding::CurvatureMaxima
+                    })
+                    .with_mode(if flags.1 {
+                        FitMode::Interpolate
+                    } else {
+                        FitMode::LeastSquares
+                    })
+                    .with_measure(if flags.2 {
+                        ErrorMeasure::TwoSided
+                    } else {
+                        ErrorMeasure::DataToCurve
+                    })
+                    .with_insertion(if flags.3 {
+                        Insertion::Bisect
+                    } else {
+                        Insertion::MaxError
+                    })
+            },
+        )
+}
+
+fn finite(v: &Vector2) -> bool {
+    v.iter().all(|c| c.is_finite())
+}
+
+fn curve_ok<const D: usize>(c: &SubdivCurve<D>) -> bool {
+    c.points().iter().all(|p| p.iter().all(|x| x.is_finite()))
+}
+
+fn report_ok(r: &RoundReport) -> bool {
+    r.max_data_to_curve.is_finite()
+        && r.rms_data_to_curve.is_finite()
+        && r.max_curve_to_data.is_finite()
+}
+
+/// An `Ok` fit holds a finite curve, finite reports, fitting indices inside the data and one
+/// control point per fitting point; an error is one of the documented kinds, and
+/// `NoConvergence` carries a finite best curve.
+fn check_fit(result: &Result<Fit<2>, SubdivFitError>, n: usize) -> Result<(), TestCaseError> {
+    match result {
+        Ok(f) => {
+            prop_assert!(curve_ok(&f.curve));
+            prop_assert!(f.reports.iter().all(report_ok));
+            prop_assert!(f.fitting.iter().all(|&i| i < n));
+            prop_assert_eq!(f.fitting.len(), f.curve.points().len());
+            prop_assert!(f.initial.iter().all(|&i| i < n));
+            prop_assert!(f.last().is_some() && f.rounds() + 1 == f.reports.len());
+            prop_assert!(svg_path(&f.curve).is_ok());
+        }
+        Err(SubdivFitError::NoConvergence {
+            best, max_error, ..
+        }) => {
+            let best: &BestCurve = best;
+            prop_assert!(!max_error.is_nan());
+            let c: SubdivCurve<2> = best
+                .curve()
+                .expect("the best curve has the data's dimension");
+            prop_assert!(curve_ok(&c));
+            prop_assert!(best.curve::<3>().is_none());
+            prop_assert!(!best.max_error().is_nan());
+        }
+        Err(e) => {
+            let _ = e.to_string();
+        }
+    }
+    Ok(())
+}
+
+proptest! {
+    #![proptest_config(ProptestConfig::with_cases(256))]
+
+    #[test]
+    fn curves_never_panic(
+        pts in wild_points(9),
+        flags in proptest::collection::vec(any::<bool>(), 0..12),
+        closed in any::<bool>(),
+        s in wild(), u in wild(), i in 0usize..12, levels in prop_oneof![0usize..4, Just(30), Just(usize::MAX)],
+        q in (wild(), wild()),
+    ) {
+        let closure = Closure::from_closed(closed);
+        prop_assert_eq!(closure.is_closed(), closed);
+        let n = pts.len();
+        let _ = SubdivCurve::smooth(pts.clone(), closure);
+        let mut sharp = flags.clone();
+        sharp.resize(n, false);
+        let c = match SubdivCurve::new(pts.clone(), flags.clone(), closure) {
+            Ok(c) => c,
+            Err(_) => match SubdivCurve::new(pts, sharp, closure) {
+                Ok(c) => c,
+                Err(e) => { let _ = e.to_string(); return Ok(()); }
+            },
+        };
+        prop_assert!(curve_ok(&c));
+        prop_assert_eq!(c.sharp().len(), c.points().len());
+        prop_assert_eq!(c.is_closed(), c.closure().is_closed());
+        let segs = c.segment_count();
+        prop_assert!(segs >= 1);
+        // Refinement stays in the hull of the polygon: finite.
+        prop_assert!(curve_ok(&c.refine()));
+        match c.refine_levels(levels) {
+            Ok(r) => prop_assert!(curve_ok(&r) && r.points().len() <= MAX_FIT_POINTS),
+            Err(e) => prop_assert!(matches!(e, SubdivFitError::TooLarge { .. }), "{}", e),
+        }
+        if let Ok(p) = c.limit_position(i) { prop_assert!(finite(&p)); }
+        if let Ok(ctrl) = c.segment_controls(i) {
+            prop_assert!(ctrl.iter().all(finite));
+            prop_assert!(bspline_to_bezier(&ctrl).iter().all(finite));
+        }
+        if let Ok(p) = c.eval_segment(i, u) { prop_assert!(finite(&p)); }
+        if let Ok(d) = c.eval_segment_derivatives(i, u) {
+            let d: CurvePoint<2> = d;
+            prop_assert!(finite(&d.position) && finite(&d.first) && finite(&d.second));
+        }
+        if let Ok((j, v)) = c.locate(s) { prop_assert!(j < segs && (0.0..=1.0).contains(&v)); }
+        if let Ok(p) = c.eval(s) { prop_assert!(finite(&p)); }
+        if let Ok(d) = c.eval_derivatives(s) { prop_assert!(finite(&d.position) && finite(&d.first)); }
+        let mut many = Vec::new();
+        let _ = c.eval_many(&[s, u, 0.0, segs as f64], &mut many);
+        prop_assert!(many.iter().all(finite));
+        if let Ok(b) = c.segment_bezier(i) { prop_assert!(b.points().iter().all(finite)); }
+        if let Ok(all) = c.to_beziers() { prop_assert!(all.iter().all(|b| b.points().iter().all(finite))); }
+        if let Ok(seg) = c.segment(i) {
+            let seg: Segment<2> = seg;
+            prop_assert_eq!(seg.index(), i);
+            prop_assert!(seg.controls().iter().all(finite));
+            if let Ok(p) = seg.eval(0.5) { prop_assert!(finite(&p)); }
+            prop_assert!(seg.into_bezier().points().iter().all(finite));
+        }
+        if let Ok(svg) = svg_path(&c) { prop_assert!(!svg.contains("NaN") && !svg.contains("inf")); }
+        let v = Vector2::new(q.0, q.1);
+        if let Ok((t, d)) = foot_point(&c, i, &v, u) {
+            prop_assert!((0.0..=1.0).contains(&t));
+            prop_assert!(!d.is_nan() || !finite(&v));
+        }
+    }
+
+    #[test]
+    fn kernels_never_panic(pts in wild_points(8), t in wild(), a in wild(), b in wild(), closed in any::<bool>()) {
+        for w in [bspline_basis(t), bspline_basis_d1(t), bspline_basis_d2(t)] {
+            prop_assert!(w.iter().all(|x| x.is_finite()) || !t.is_finite() || t.abs() > 1e100);
+        }
+        if let Ok(four) = <[Vector2; 4]>::try_from(&pts[..pts.len().min(4)]) {
+            let _ = bspline_to_bezier(&four);
+        }
+        prop_assert_eq!(turning_angle(&pts, closed).len(), pts.len());
+        prop_assert_eq!(discrete_curvature(&pts, closed).len(), pts.len());
+        let features: Vec<FeaturePoint> = feature_points(&pts, closed, a, b, t);
+        prop_assert!(features.iter().all(|f| f.index < pts.len()));
+        let _ = point_polyline_distance(&Vector2::new(a, b), &pts);
+        prop_assert!(point_polyline_distance(&Vector2::new(a, b), &[]).is_infinite());
+        let _ = scaled_corners(&pts, Closure::from_closed(closed), &FitOptions::new(t.abs()));
+    }
+
+    #[test]
+    fn fits_never_panic(
+        data in plausible_data(),
+        opts in options(),
+        closed in any::<bool>(),
+        corners in proptest::collection::vec(prop_oneof![0usize..70, Just(usize::MAX)], 0..4),
+    ) {
+        let closure = Closure::from_closed(closed);
+        let n = data.len();
+        let start = Instant::now();
+        check_fit(&fit(&data, closure, &opts), n)?;
+        check_fit(&fit_with_corners(&data, closure, &corners, &opts), n)?;
+        if let Ok(found) = scaled_corners(&data, closure, &opts) {
+            prop_assert!(found.windows(2).all(|w| w[0] < w[1]) && found.iter().all(|&i| i < n));
+        }
+        prop_assert!(start.elapsed() < Duration::from_secs(5), "{:?}", start.elapsed());
+    }
+
+    #[test]
+    fn wild_data_never_panics(data in wild_points(12), tol in wild(), closed in any::<bool>()) {
+        let closure = Closure::from_closed(closed);
+        let opts = FitOptions::new(tol);
+        check_fit(&fit(&data, closure, &opts), data.len())?;
+        check_fit(&fit(&data, closure, &FitOptions::paper(tol)), data.len())?;
+    }
+}
+
+/// Sizes the caller chooses are refused before any work, quickly.
+#[test]
+fn limits_are_checked_before_work() {
+    let data: Vec<Vector2> = (0..1000)
+        .map(|k| {
+            let t = std::f64::consts::TAU * k as f64 / 1000.0;
+            Vector2::new(t.cos(), t.sin())
+        })
+        .collect();
+    let start = Instant::now();
+    let o = FitOptions::new(1e-3);
+    for opts in [
+        o.with_samples_per_segment(1_000_000_000),
+        o.with_samples_per_segment(usize::MAX),
+        o.with_max_rounds(usize::MAX),
+        o.with_feature_scale(1e300),
+    ] {
+        let e = fit(&data, Closure::Closed, &opts).unwrap_err();
+        assert!(
+            matches!(
+                e,
+                SubdivFitError::TooLarge { .. } | SubdivFitError::InvalidOption { .. }
+            ),
+            "{e}"
+        );
+    }
+    let c = SubdivCurve::smooth(data[..8].to_vec(), Closure::Closed).unwrap();
+    assert!(matches!(
+        c.refine_levels(40),
+        Err(SubdivFitError::TooLarge {
+            max: MAX_FIT_POINTS,
+            ..
+        })
+    ));
+    assert!(
+        c.refine_levels(21)
+            .is_ok_and(|r| r.points().len() == MAX_FIT_POINTS)
+    );
+    assert!(start.elapsed() < Duration::from_secs(5));
+    // A tolerance below the coordinates' precision is refused; an unreachable one ends (no point
+    // left to insert) with the best curve.
+    assert!(matches!(
+        fit(&data, Closure::Closed, &FitOptions::new(1e-300)),
+        Err(SubdivFitError::ToleranceBelowPrecision { .. })
+    ));
+    let start = Instant::now();
+    match fit(&data, Closure::Closed, &FitOptions::new(1e-13)) {
+        Err(SubdivFitError::NoConvergence {
+            best, max_error, ..
+        }) => {
+            assert!(best.max_error() <= max_error);
+            assert!(curve_ok(&best.curve::<2>().unwrap()));
+        }
+        other => panic!("{other:?}"),
+    }
+    assert!(start.elapsed() < Duration::from_secs(20));
+    // Space curves and huge coordinates.
+    let lifted: Vec<Vector3> = data
+        .iter()
+        .map(|p| Vector3::new(p.x(), p.y(), 1e150))
+        .collect();
+    assert!(matches!(
+        fit(&lifted, Closure::Open, &FitOptions::new(1e-3)),
+        Err(SubdivFitError::ToleranceBelowPrecision { .. })
+    ));
+    let f = fit(&lifted, Closure::Open, &FitOptions::new(1e137)).unwrap();
+    assert!(curve_ok(&f.curve));
+    const { assert!(SCALE_RATIO > 0.5 && SCALE_RATIO < 1.0) };
+}
+
+/// Deserialization validates like the constructors; invalid options deserialize (their fields are
+/// public) but every fit refuses them before any work.
+#[cfg(feature = "serde")]
+#[test]
+fn invariant_violating_json_is_refused() {
+    for bad in [
+        r#"{"points":[],"sharp":[],"closed":true}"#,
+        r#"{"points":[[0,0],[1,0]],"sharp":[false,false],"closed":true}"#,
+        r#"{"points":[[0,0],[1,0],[1,1]],"sharp":[false],"closed":true}"#,
+        r#"{"points":[[0,0],[1e200,0],[1,1]],"sharp":[false,false,false],"closed":true}"#,
+        r#"{"points":[[0,0],[1e999,0],[1,1]],"sharp":[false,false,false],"closed":true}"#,
+        r#"{"points":[[0,0,0],[1,0,0],[1,1,0]],"sharp":[false,false,false],"closed":true}"#,
+        r#"{"points":[[0,0],[1,0],[1,1]],"sharp":[false,false,false]}"#,
+        r#"[1,2,3]"#,
+    ] {
+        assert!(
+            serde_json::from_str::<SubdivCurve<2>>(bad).is_err(),
+            "{bad}"
+        );
+    }
+    let good = r#"{"points":[[0,0],[1,0],[1,1]],"sharp":[false,true,false],"closed":false}"#;
+    let c: SubdivCurve<2> = serde_json::from_str(good).unwrap();
+    assert_eq!(c.sharp(), [true, true, true]);
+    let round: SubdivCurve<2> = serde_json::from_str(&serde_json::to_string(&c).unwrap()).unwrap();
+    assert_eq!(round, c);
+    for bad in [r#""Sideways""#, "3", "null"] {
+        assert!(serde_json::from_str::<Closure>(bad).is_err());
+        assert!(serde_json::from_str::<ErrorMeasure>(bad).is_err());
+        assert!(serde_json::from_str::<FitMode>(bad).is_err());
+        assert!(serde_json::from_str::<Insertion>(bad).is_err());
+        assert!(serde_json::from_str::<Seeding>(bad).is_err());
+        assert!(serde_json::from_str::<FeaturePoint>(bad).is_err());
+        assert!(serde_json::from_str::<RoundReport>(bad).is_err());
+    }
+    let data: Vec<Vector2> = (0..50)
+        .map(|k| {
+            let t = std::f64::consts::TAU * k as f64 / 50.0;
+            Vector2::new(t.cos(), t.sin())
+        })
+        .collect();
+    let defaults = serde_json::to_value(FitOptions::new(1e-3)).unwrap();
+    for (field, value) in [
+        ("tolerance", serde_json::json!(-1.0)),
+        ("tolerance", serde_json::json!(0.0)),
+        ("sharp_angle", serde_json::json!(7.0)),
+        ("feature_scale", serde_json::json!(-1.0)),
+        ("feature_scale", serde_json::json!(1e300)),
+        ("curvature_floor", serde_json::json!(-1.0)),
+        ("prominence", serde_json::json!(-1.0)),
+        ("max_rounds", serde_json::json!(u64::MAX)),
+        ("samples_per_segment", serde_json::json!(1_000_000_000u64)),
+        ("samples_per_segment", serde_json::json!(1)),
+    ] {
+        let mut v = defaults.clone();
+        v[field] = value;
+        if let Ok(o) = serde_json::from_value::<FitOptions>(v) {
+            let start = Instant::now();
+            assert!(fit(&data, Closure::Closed, &o).is_err(), "{field}");
+            assert!(start.elapsed() < Duration::from_secs(1));
+        }
+    }
+}
+
+/// Every public item of `src/lib.rs` (outside the `paper` feature) occurs in this suite.
+#[test]
+fn every_public_item_is_in_this_suite() {
+    let missing = bez_core::proptest_support::missing_from_suite(
+        include_str!("../src/lib.rs"),
+        include_str!("no_panic.rs"),
+    );
+    assert!(missing.is_empty(), "not covered by this suite: {missing:?}");
+}

@@ -1,0 +1,169 @@
+//! Robustness to sampling density and noise, bounded options, the banded least-squares mode.
+#![allow(clippy::unwrap_used, reason = "tests fail loudly")]
+
+use subdiv_fit::{
+    Closure, FitMode, FitOptions, MAX_SAMPLES_PER_SEGMENT, SubdivFitError, Vector2, fit,
+    fit_with_corners, scaled_corners,
+};
+
+/// A deterministic uniform generator in [-1, 1].
+fn lcg(seed: u64) -> impl FnMut() -> f64 {
+    let mut state = seed;
+    move || {
+        state = state
+            .wrapping_mul(6_364_136_223_846_793_005)
+            .wrapping_add(1_442_695_040_888_963_407);
+        2.0 * ((state >> 11) as f64 / (1u64 << 53) as f64) - 1.0
+    }
+}
+
+/// `n` points on the unit circle, each moved radially by uniform noise of amplitude `noise`.
+fn noisy_circle(n: usize, noise: f64, seed: u64) -> Vec<Vector2> {
+    let mut rand = lcg(seed);
+    (0..n)
+        .map(|k| {
+            let t = std::f64::consts::TAU * k as f64 / n as f64;
+            let r = 1.0 + noise * rand();
+            Vector2::new(r * t.cos(), r * t.sin())
+        })
+        .collect()
+}
+
+/// A closed outline: two straight edges meeting at a right angle, a half circle joined to the
+/// second edge with a common tangent (a curvature jump, not a corner), and a concave arc meeting
+/// the half circle at a 30° corner and the first edge at a 60° corner. Each piece gets `n / 4`
+/// points. Returns the data and its three corners.
+fn outline(n: usize) -> (Vec<Vector2>, Vec<usize>) {
+    let quarter = n / 4;
+    let mut pts = Vec::with_capacity(n);
+    for k in 0..quarter {
+        pts.push(Vector2::new(2.0 * k as f64 / quarter as f64, 0.0));
+    }
+    for k in 0..quarter {
+        pts.push(Vector2::new(2.0, 2.0 * k as f64 / quarter as f64));
+    }
+    // Half circle from (2, 2) to (0, 2) over the top, tangent to the right edge at (2, 2).
+    for k in 0..quarter {
+        let t = std::f64::consts::PI * k as f64 / quarter as f64;
+        pts.push(Vector2::new(1.0 + t.cos(), 2.0 + t.sin()));
+    }
+    // Concave arc from (0, 2) to (0, 0) bulging right: centre (-1.7320508, 1), radius 2.
+    let c = -(3.0f64).sqrt();
+    let a0 = (1.0f64 / 2.0).asin();
+    for k in 0..quarter {
+        let t = a0 - 2.0 * a0 * k as f64 / quarter as f64;
+        pts.push(Vector2::new(c + 2.0 * t.cos(), 1.0 + 2.0 * t.sin()));
+    }
+    (pts, vec![0, quarter, 3 * quarter])
+}
+
+#[test]
+fn options_out_of_range_are_refused_before_any_work() {
+    let data = noisy_circle(64, 0.0, 1);
+    let o = FitOptions::new(1e-3);
+    assert!(matches!(
+        fit(
+            &data,
+            Closure::Closed,
+            &o.with_samples_per_segment(1_000_000_000)
+        ),
+        Err(SubdivFitError::TooLarge {
+            name: "samples_per_segment",
+            requested: 1_000_000_000,
+            max: MAX_SAMPLES_PER_SEGMENT,
+        })
+    ));
+    assert!(matches!(
+        fit(&data, Closure::Closed, &o.with_max_rounds(usize::MAX)),
+        Err(SubdivFitError::TooLarge {
+            name: "max_rounds",
+            ..
+        })
+    ));
+    for v in [f64::NAN, -1.0, f64::INFINITY, 1e7] {
+        assert!(matches!(
+            fit(&data, Closure::Closed, &o.with_feature_scale(v)),
+            Err(SubdivFitError::InvalidOption {
+                name: "feature_scale",
+                ..
+            })
+        ));
+    }
+    for t in [0.0, -1e-3, f64::NAN, f64::NEG_INFINITY] {
+        assert!(matches!(
+            fit(&data, Closure::Closed, &o.with_tolerance(t)),
+            Err(SubdivFitError::InvalidTolerance { .. })
+        ));
+    }
+    assert!(matches!(
+        fit_with_corners(&data, Closure::Closed, &[3, 64], &o),
+        Err(SubdivFitError::CornerOutOfRange {
+            index: 64,
+            points: 64
+        })
+    ));
+    let mut huge = data.clone();
+    huge[9] = Vector2::new(1e200, 0.0);
+    assert!(matches!(
+        fit(&huge, Closure::Closed, &o),
+        Err(SubdivFitError::Core(
+            bez_core::CoreError::CoordinateOutOfRange { index: 9, .. }
+        ))
+    ));
+}
+
+#[test]
+fn a_circle_needs_about_ten_control_points() {
+    let data = noisy_circle(400, 0.0, 1);
+    let f = fit(&data, Closure::Closed, &FitOptions::new(1e-3)).unwrap();
+    let k = f.curve.points().len();
+    assert!((8..=16).contains(&k), "{k} control points");
+    assert!(f.curve.sharp().iter().all(|s| !s));
+}
+
+/// 100,000 points with uniform radial noise of 2.5e-4 (a quarter of the tolerance): least squares
+/// (banded) fits with a count set by the circle, not by the noise, and no corner.
+#[test]
+fn noisy_circle_of_100k_points_fits_with_a_count_of_the_shape() {
+    let data = noisy_circle(100_000, 2.5e-4, 7);
+    for mode in [FitMode::LeastSquares, FitMode::Interpolate] {
+        let f = fit(
+            &data,
+            Closure::Closed,
+            &FitOptions::new(1e-3).with_mode(mode),
+        )
+        .unwrap();
+        let k = f.curve.points().len();
+        assert!((8..=40).contains(&k), "{mode:?}: {k} control points");
+        assert!(f.curve.sharp().iter().all(|s| !s), "{mode:?}");
+        // The curve stays near the noiseless circle.
+        for s in 0..=200 {
+            let p = f.curve.eval(s as f64 * k as f64 / 200.0).unwrap();
+            assert!(
+                (p.norm() - 1.0).abs() < 1.5e-3,
+                "{mode:?}: radius {}",
+                p.norm()
+            );
+        }
+    }
+}
+
+#[test]
+fn control_counts_do_not_grow_with_the_sampling_density() {
+    let counts: Vec<usize> = [10_000, 100_000]
+        .into_iter()
+        .map(|n| {
+            let (data, corners) = outline(n);
+            let opts = FitOptions::new(1e-3);
+            assert_eq!(
+                scaled_corners(&data, Closure::Closed, &opts).unwrap(),
+                corners
+            );
+            let f = fit(&data, Closure::Closed, &opts).unwrap();
+            f.curve.points().len()
+        })
+        .collect();
+    let (a, b) = (counts[0] as f64, counts[1] as f64);
+    assert!((a - b).abs() <= 0.2 * a.min(b), "{counts:?}");
+    assert!(counts[0] <= 80, "{counts:?}");
+}

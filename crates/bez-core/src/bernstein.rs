@@ -43,6 +43,29 @@ pub fn binomial(n: usize, k: usize) -> f64 {
     }
 }
 
+/// The row C(n, 0), …, C(n, n) in O(n), by C(n, i) = C(n, i − 1)(n − i + 1)/i: exact integers
+/// rounded once (equal to [`binomial`]) up to [`EXACT_BINOMIAL_DEGREE`], then in floating point
+/// from both ends to the middle (within n/2 roundings of the exact values, infinite beyond
+/// degree about 1,029).
+pub(crate) fn binomial_row(n: usize) -> Vec<f64> {
+    let mut row = vec![1.0; n + 1];
+    if n <= EXACT_BINOMIAL_DEGREE {
+        let mut c: u128 = 1;
+        for (i, r) in row.iter_mut().enumerate().skip(1) {
+            c = c * (n - i + 1) as u128 / i as u128;
+            *r = c as f64;
+        }
+    } else {
+        let mut c = 1.0;
+        for i in 1..=n / 2 {
+            c = c * (n - i + 1) as f64 / i as f64;
+            row[i] = c;
+            row[n - i] = c;
+        }
+    }
+    row
+}
+
 fn binomial_float(n: usize, k: usize) -> f64 {
     let mut c = 1.0_f64;
     for i in 1..=k {
@@ -258,16 +281,16 @@ pub fn bernstein_product(a: &[f64], b: &[f64]) -> Vec<f64> {
     if m + n > PRODUCT_EXACT_DEGREE {
         return bernstein_product_log(a, b);
     }
-    // Binomial rows once (O(m + n) calls), not per term: the double loop is O(mn).
+    // Binomial rows once, in O(m + n), not per term: the double loop is O(mn).
     let wa: Vec<f64> = a
         .iter()
-        .enumerate()
-        .map(|(i, &ai)| binomial(m, i) * ai)
+        .zip(binomial_row(m))
+        .map(|(&ai, c)| c * ai)
         .collect();
     let wb: Vec<f64> = b
         .iter()
-        .enumerate()
-        .map(|(j, &bj)| binomial(n, j) * bj)
+        .zip(binomial_row(n))
+        .map(|(&bj, c)| c * bj)
         .collect();
     let mut c = vec![0.0; m + n + 1];
     for (i, &ai) in wa.iter().enumerate() {
@@ -275,8 +298,8 @@ pub fn bernstein_product(a: &[f64], b: &[f64]) -> Vec<f64> {
             c[i + j] += ai * bj;
         }
     }
-    for (k, ck) in c.iter_mut().enumerate() {
-        *ck /= binomial(m + n, k);
+    for (ck, binom) in c.iter_mut().zip(binomial_row(m + n)) {
+        *ck /= binom;
     }
     c
 }
@@ -338,6 +361,26 @@ pub fn bernstein_derivative_coeffs(coeffs: &[f64]) -> Vec<f64> {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn binomial_rows_match_single_binomials() {
+        for n in [0, 1, 2, 7, 60, 119, 120] {
+            let row = binomial_row(n);
+            for (i, c) in row.iter().enumerate() {
+                assert_eq!(*c, binomial(n, i), "C({n},{i})");
+            }
+        }
+        for n in [121, 200, 500, 1000] {
+            let row = binomial_row(n);
+            for (i, c) in row.iter().enumerate() {
+                let exact = binomial(n, i);
+                assert!(
+                    (c - exact).abs() <= 1e-12 * exact,
+                    "C({n},{i}): {c} vs {exact}"
+                );
+            }
+        }
+    }
 
     #[test]
     fn product_in_logarithms_matches_the_exact_weights_and_stays_finite() {

@@ -10,7 +10,7 @@ use alloc::vec::Vec;
 use core::ops::{Add, Mul, Sub};
 
 use crate::CoreError;
-use crate::bernstein::{binomial, powi};
+use crate::bernstein::{binomial_row, powi};
 
 /// What a control point must support: affine combinations with `f64` weights, and a zero.
 ///
@@ -223,8 +223,8 @@ impl<T: ControlPoint> HornerBernstein<T> {
         } else {
             points
                 .iter()
-                .enumerate()
-                .map(|(i, &p)| p * binomial(n, i))
+                .zip(binomial_row(n))
+                .map(|(&p, c)| p * c)
                 .collect()
         };
         Self { coefficients }

@@ -104,6 +104,69 @@ fn versus_peers(c: &mut Criterion) {
     g.finish();
 }
 
+/// The `Flattener` modes beside kurbo's `flatten` and lyon_geom's `for_each_flattened` on the
+/// peer cubics at the same absolute tolerance, 1e-3 × the curve's size (the standing
+/// comparison's tolerance). Throughput: output segments of each method.
+fn flattener_versus_peers(c: &mut Criterion) {
+    use bez_subdiv::{Flattener, Method};
+    use lyon_geom::{CubicBezierSegment, point};
+    let mut g = c.benchmark_group("flattener_vs_peers");
+    for (name, curve) in bez_subdiv::cases::peer_cubics() {
+        let p = curve.points();
+        let tol = 1e-3 * bez_subdiv::curve_size(&curve);
+        let Ok(path) = bez_core::curves_to_bez_path(std::slice::from_ref(&curve)) else {
+            continue;
+        };
+        let lyon = CubicBezierSegment {
+            from: point(p[0].x(), p[0].y()),
+            ctrl1: point(p[1].x(), p[1].y()),
+            ctrl2: point(p[2].x(), p[2].y()),
+            to: point(p[3].x(), p[3].y()),
+        };
+        for (label, method) in [
+            ("bezkit Optimal", Method::Optimal),
+            ("bezkit Fast", Method::Fast),
+        ] {
+            let flattener = Flattener::new(tol).with_method(method);
+            let mut points = Vec::new();
+            let Ok(segments) = flattener.flatten(&curve, |q| points.push(q.point)) else {
+                continue;
+            };
+            g.throughput(Throughput::Elements(segments as u64));
+            g.bench_function(BenchmarkId::new(label, &name), |b| {
+                b.iter(|| {
+                    points.clear();
+                    flattener.flatten(black_box(&curve), |q| points.push(q.point))
+                });
+            });
+        }
+        let mut kurbo_points = Vec::new();
+        kurbo::flatten(&path, tol, |el| kurbo_points.push(el));
+        g.throughput(Throughput::Elements(kurbo_points.len() as u64 - 1));
+        g.bench_function(BenchmarkId::new("kurbo flatten", &name), |b| {
+            b.iter(|| {
+                kurbo_points.clear();
+                kurbo::flatten(black_box(&path), tol, |el| kurbo_points.push(el));
+                kurbo_points.len()
+            });
+        });
+        let mut lyon_points = Vec::new();
+        lyon.for_each_flattened(tol, &mut |s| lyon_points.push(s.to));
+        g.throughput(Throughput::Elements(lyon_points.len() as u64));
+        g.bench_function(
+            BenchmarkId::new("lyon_geom for_each_flattened", &name),
+            |b| {
+                b.iter(|| {
+                    lyon_points.clear();
+                    black_box(&lyon).for_each_flattened(tol, &mut |s| lyon_points.push(s.to));
+                    lyon_points.len()
+                });
+            },
+        );
+    }
+    g.finish();
+}
+
 /// One degree-25 curve, each mode, throughput in output points (target: < 0.3 µs per point).
 fn degree_25_per_point(c: &mut Criterion) {
     let Some(curve) = bez_subdiv::cases::degree25_curve() else {
@@ -163,5 +226,12 @@ fn batch(c: &mut Criterion) {
     g.finish();
 }
 
-criterion_group!(benches, rules, versus_peers, degree_25_per_point, batch);
+criterion_group!(
+    benches,
+    rules,
+    versus_peers,
+    flattener_versus_peers,
+    degree_25_per_point,
+    batch
+);
 criterion_main!(benches);

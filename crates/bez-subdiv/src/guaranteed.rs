@@ -77,30 +77,47 @@ pub fn flatten_guaranteed<C: BezierForm<2> + ?Sized>(
     tolerance: f64,
     max_depth: usize,
 ) -> Result<Vec<FlatPoint>, SubdivError> {
+    let mut out = Vec::new();
+    stream_guaranteed(curve.as_bezier(), tolerance, max_depth, |p| out.push(p))?;
+    Ok(out)
+}
+
+/// [`flatten_guaranteed`]'s points streamed to `sink`; returns the number of segments.
+pub(crate) fn stream_guaranteed(
+    curve: &BezierCurve<2>,
+    tolerance: f64,
+    max_depth: usize,
+    sink: impl FnMut(FlatPoint),
+) -> Result<usize, SubdivError> {
     halve_to_points(
-        curve.as_bezier(),
+        curve,
         tolerance,
         max_depth,
         |piece| within_chord_segment(piece, tolerance),
-        |_, _, _, _| {},
+        |_, _, _, _: &mut dyn FnMut(FlatPoint)| {},
+        sink,
     )
 }
 
-/// The points of a flattening by halving at t = ½ until `accept` holds for a piece: B(0), then
-/// for each accepted piece on [t₀, t₀ + span], in parameter order, the points `interior(piece,
-/// t₀, span, out)` appends and the piece's end point (an exact de Casteljau end point; t = 1
-/// pinned at the end, since the dyadic spans sum to 1 exactly only up to level 53).
+/// A flattening by halving at t = ½ until `accept` holds for a piece, streamed to `sink`: B(0),
+/// then for each accepted piece on [t₀, t₀ + span], in parameter order, the points
+/// `interior(piece, t₀, span, sink)` sends and the piece's end point (an exact de Casteljau end
+/// point; the dyadic spans of at most [`MAX_FLATTEN_DEPTH`](crate::MAX_FLATTEN_DEPTH) levels
+/// sum to exactly 1). Returns the number of segments. On an error, the points before it have
+/// been sent.
 ///
 /// # Errors
 /// [`SubdivError::InvalidTolerance`] unless `tolerance` is positive and finite,
-/// [`SubdivError::TooFewPoints`] below two control points, [`SubdivError::DepthLimit`].
+/// [`SubdivError::TooFewPoints`] below two control points, [`SubdivError::DepthTooLarge`],
+/// [`SubdivError::ToleranceBelowRounding`] (before any point), [`SubdivError::DepthLimit`].
 pub(crate) fn halve_to_points(
     curve: &BezierCurve<2>,
     tolerance: f64,
     max_depth: usize,
     accept: impl FnMut(&[Vector2]) -> bool,
-    mut interior: impl FnMut(&[Vector2], f64, f64, &mut Vec<FlatPoint>),
-) -> Result<Vec<FlatPoint>, SubdivError> {
+    mut interior: impl FnMut(&[Vector2], f64, f64, &mut dyn FnMut(FlatPoint)),
+    mut sink: impl FnMut(FlatPoint),
+) -> Result<usize, SubdivError> {
     if !(tolerance.is_finite() && tolerance > 0.0) {
         return Err(SubdivError::InvalidTolerance { value: tolerance });
     }
@@ -109,25 +126,27 @@ pub(crate) fn halve_to_points(
         return Err(SubdivError::TooFewPoints { got: n });
     }
     crate::limits::check_work(curve, tolerance, max_depth)?;
-    let mut out = vec![FlatPoint {
+    let mut points = 1_usize;
+    let mut counted = |p: FlatPoint| {
+        points += 1;
+        sink(p);
+    };
+    counted(FlatPoint {
         t: 0.0,
         point: curve.start(),
-    }];
+    });
     // A piece at level d spans 2⁻ᵈ of the parameter range.
     let mut t0 = 0.0_f64;
     halve_until(curve.points(), max_depth, accept, |piece, depth| {
         let span = 0.5_f64.powi(i32::try_from(depth).unwrap_or(i32::MAX));
-        interior(piece, t0, span, &mut out);
+        interior(piece, t0, span, &mut counted);
         t0 += span;
-        out.push(FlatPoint {
+        counted(FlatPoint {
             t: t0,
             point: piece[n - 1],
         });
     })?;
-    if let Some(last) = out.last_mut() {
-        last.t = 1.0;
-    }
-    Ok(out)
+    Ok(points - 2)
 }
 
 #[cfg(test)]

@@ -62,6 +62,7 @@ mod limits;
 mod local_wang;
 mod measure;
 mod near_optimal;
+pub mod optimal;
 mod split_rule;
 #[cfg(test)]
 mod test_support;

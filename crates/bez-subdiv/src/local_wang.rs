@@ -56,15 +56,18 @@ pub fn flatten_local_wang<C: BezierForm<2> + ?Sized>(
     tolerance: f64,
     max_depth: usize,
 ) -> Result<Vec<FlatPoint>, SubdivError> {
-    local_wang_bezier(curve.as_bezier(), tolerance, max_depth)
+    let mut out = Vec::new();
+    stream_local_wang(curve.as_bezier(), tolerance, max_depth, |p| out.push(p))?;
+    Ok(out)
 }
 
-/// [`flatten_local_wang`] on the Bézier form (one instance for every curve type).
-fn local_wang_bezier(
+/// [`flatten_local_wang`]'s points streamed to `sink`; returns the number of segments.
+pub(crate) fn stream_local_wang(
     curve: &BezierCurve<2>,
     tolerance: f64,
     max_depth: usize,
-) -> Result<Vec<FlatPoint>, SubdivError> {
+    sink: impl FnMut(FlatPoint),
+) -> Result<usize, SubdivError> {
     let horner = HornerBernstein::new(curve.points());
     let max_steps = LOCAL_WANG_STEPS as f64;
     halve_to_points(
@@ -72,17 +75,18 @@ fn local_wang_bezier(
         tolerance,
         max_depth,
         |piece| wang_steps(piece, tolerance) <= max_steps,
-        |piece, t0, span, out| {
+        |piece, t0, span, out: &mut dyn FnMut(FlatPoint)| {
             // At most LOCAL_WANG_STEPS here, so the cast is exact.
             let k = wang_steps(piece, tolerance).ceil().max(1.0) as usize;
             for j in 1..k {
                 let t = t0 + span * (j as f64 / k as f64);
                 // `None` only for an empty polygon, which halve_to_points rejects.
                 if let Some(point) = horner.eval(t) {
-                    out.push(FlatPoint { t, point });
+                    out(FlatPoint { t, point });
                 }
             }
         },
+        sink,
     )
 }
 

@@ -1,9 +1,8 @@
 //! Beyond the paper: near-optimal flattening by the curvature density √(|κ| / (8 tol)).
 
-use bez_core::{BezierCurve, BezierForm, Vector2};
+use bez_core::{BezierCurve, Vector2};
 
 use crate::error::SubdivError;
-use crate::guaranteed::FlatPoint;
 
 /// Quadrature nodes per unit of degree for the density integral.
 const NODES_PER_DEGREE: usize = 64;
@@ -57,25 +56,10 @@ fn density_integral(
     Ok((ts, cumulative))
 }
 
-/// Points B(tᵢ) with close to the fewest segments whose polyline is within `tolerance` of the
-/// curve in Hausdorff distance: the points of `Method::Optimal`, collected.
-///
-/// # Errors
-/// As [`Method::Optimal`](crate::Method::Optimal).
-pub fn flatten_near_optimal<C: BezierForm<2> + ?Sized>(
-    curve: &C,
-    tolerance: f64,
-    max_depth: usize,
-) -> Result<Vec<FlatPoint>, SubdivError> {
-    let mut out = Vec::new();
-    crate::optimal::flatten_optimal(curve, tolerance, max_depth, |p| out.push(p))?;
-    Ok(out)
-}
-
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::test_support::{assert_typed_errors, curve};
+    use crate::test_support::curve;
 
     /// N* of a circular arc of radius r and angle θ: the density √(κ/(8 tol)) is constant, so
     /// N* = rθ √(1/(8 r tol)) = θ √(r / (8 tol)). The quadratic arc is not exactly circular, so
@@ -93,10 +77,5 @@ mod tests {
             "{n_star} vs {expected}"
         );
         Ok(())
-    }
-
-    #[test]
-    fn errors_are_typed() {
-        assert_typed_errors(flatten_near_optimal);
     }
 }

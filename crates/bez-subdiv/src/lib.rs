@@ -96,7 +96,7 @@ pub use crate::flatten::{
 };
 pub use crate::flattener::{Flattener, Method, PathPoint};
 pub use crate::guaranteed::{FlatPoint, distance_to_segment};
-pub use crate::hausdorff::{HausdorffSampling, measured_hausdorff};
+pub use crate::hausdorff::{HausdorffSampling, MAX_HAUSDORFF_WORK, measured_hausdorff};
 pub use crate::limits::MAX_FLATTEN_DEPTH;
 pub use crate::local_wang::LOCAL_WANG_STEPS;
 pub use crate::measure::{distance_to_chord_line, flatness, hull_area, max_chord_distance};

@@ -4,7 +4,7 @@
 
 use std::hint::black_box;
 
-use bez_subdiv::{FlattenOptions, SplitRule, flatten, flatten_fixed_into};
+use bez_subdiv::{FlattenOptions, Flattener, Method, SplitRule, flatten, flatten_fixed_into};
 use bezkit_benches::random_curve;
 use criterion::{BenchmarkId, Criterion, Throughput, criterion_group, criterion_main};
 
@@ -70,16 +70,15 @@ fn versus_peers(c: &mut Criterion) {
             });
         });
         let mut wang_points = Vec::new();
-        let Ok(wang_segments) =
-            bez_subdiv::flatten_wang(&curve, tol, |p| wang_points.push(p.point))
-        else {
+        let fast = Flattener::new(tol);
+        let Ok(wang_segments) = fast.flatten(&curve, |p| wang_points.push(p.point)) else {
             continue;
         };
         g.throughput(Throughput::Elements(wang_segments as u64));
-        g.bench_function(BenchmarkId::new("bezkit flatten_wang", &name), |b| {
+        g.bench_function(BenchmarkId::new("bezkit Method::Fast", &name), |b| {
             b.iter(|| {
                 wang_points.clear();
-                bez_subdiv::flatten_wang(black_box(&curve), tol, |p| wang_points.push(p.point))
+                fast.flatten(black_box(&curve), |p| wang_points.push(p.point))
             });
         });
         let mut lyon_points = Vec::new();
@@ -108,7 +107,6 @@ fn versus_peers(c: &mut Criterion) {
 /// peer cubics at the same absolute tolerance, 1e-3 × the curve's size (the standing
 /// comparison's tolerance). Throughput: output segments of each method.
 fn flattener_versus_peers(c: &mut Criterion) {
-    use bez_subdiv::{Flattener, Method};
     use lyon_geom::{CubicBezierSegment, point};
     let mut g = c.benchmark_group("flattener_vs_peers");
     for (name, curve) in bez_subdiv::cases::peer_cubics() {
@@ -186,42 +184,42 @@ fn degree_25_per_point(c: &mut Criterion) {
     g.bench_function("fixed rule, flatten_fixed_into", |b| {
         b.iter(|| flatten_fixed_into(black_box(&curve), 1e-5, 40, &mut polyline).map(|s| s.pieces));
     });
-    g.throughput(Throughput::Elements(count(
-        bez_subdiv::flatten_guaranteed(&curve, tol, 40).map(|p| p.len()),
-    )));
-    g.bench_function("guaranteed", |b| {
-        b.iter(|| bez_subdiv::flatten_guaranteed(black_box(&curve), tol, 40));
-    });
-    g.throughput(Throughput::Elements(count(
-        bez_subdiv::flatten_local_wang(&curve, tol, 40).map(|p| p.len()),
-    )));
-    g.bench_function("local Wang", |b| {
-        b.iter(|| bez_subdiv::flatten_local_wang(black_box(&curve), tol, 40));
-    });
-    g.throughput(Throughput::Elements(count(
-        bez_subdiv::flatten_near_optimal(&curve, tol, 40).map(|p| p.len()),
-    )));
-    g.bench_function("near-optimal", |b| {
-        b.iter(|| bez_subdiv::flatten_near_optimal(black_box(&curve), tol, 40));
-    });
+    for (label, method) in [
+        ("guaranteed", Method::Halving),
+        ("local Wang", Method::LocalWang),
+        ("near-optimal", Method::Optimal),
+    ] {
+        let flattener = Flattener::new(tol).with_method(method);
+        let mut points = Vec::new();
+        g.throughput(Throughput::Elements(count(
+            flattener.flatten(&curve, |p| points.push(p.point)),
+        )));
+        g.bench_function(label, |b| {
+            b.iter(|| {
+                points.clear();
+                flattener.flatten(black_box(&curve), |p| points.push(p.point))
+            });
+        });
+    }
     g.finish();
 }
 
-/// 64 curves of degree 12: one by one on one thread, and `flatten_batch` with rayon.
+/// 64 curves of degree 12 with `Method::Optimal`: one by one on one thread, and
+/// `Flattener::flatten_batch` with rayon.
 fn batch(c: &mut Criterion) {
     let curves = bez_subdiv::cases::random_curves(12, 64, 5);
-    let options = FlattenOptions::default();
+    let flattener = Flattener::new(1e-3).with_method(Method::Optimal);
     let mut g = c.benchmark_group("flatten_64_curves");
     g.bench_function("sequential", |b| {
         b.iter(|| {
             curves
                 .iter()
-                .map(|cv| flatten(black_box(cv), &options))
+                .map(|cv| flattener.flatten_to_vec(black_box(cv)))
                 .collect::<Vec<_>>()
         });
     });
     g.bench_function("rayon batch", |b| {
-        b.iter(|| bez_subdiv::flatten_batch(black_box(&curves), &options));
+        b.iter(|| flattener.flatten_batch(black_box(&curves)));
     });
     g.finish();
 }

@@ -6,12 +6,48 @@
 
 use bez_core::{BezierCurve, BezierForm, Vector2};
 use bez_subdiv::{
-    FlattenOptions, HausdorffSampling, SplitRule, flatten, flatten_batch, flatten_fixed_into,
-    flatten_guaranteed, flatten_local_wang, flatten_near_optimal, measured_hausdorff,
+    FlattenOptions, Flattener, HausdorffSampling, SplitRule, flatten, flatten_fixed_into,
+    measured_hausdorff,
 };
 use class_a::{ClassACurve, TypicalPlanar, cases as class_a_cases};
 use lambda_bezier::LambdaBezierCurve;
 use subdiv_fit::SubdivCurve;
+
+/// `Method::Halving`'s points, collected.
+fn flatten_guaranteed<C: BezierForm<2> + ?Sized>(
+    c: &C,
+    tol: f64,
+    depth: usize,
+) -> Result<Vec<bez_subdiv::FlatPoint>, bez_subdiv::SubdivError> {
+    Flattener::new(tol)
+        .with_method(bez_subdiv::Method::Halving)
+        .with_max_depth(depth)
+        .flatten_to_vec(c)
+}
+
+/// `Method::LocalWang`'s points, collected.
+fn flatten_local_wang<C: BezierForm<2> + ?Sized>(
+    c: &C,
+    tol: f64,
+    depth: usize,
+) -> Result<Vec<bez_subdiv::FlatPoint>, bez_subdiv::SubdivError> {
+    Flattener::new(tol)
+        .with_method(bez_subdiv::Method::LocalWang)
+        .with_max_depth(depth)
+        .flatten_to_vec(c)
+}
+
+/// `Method::Optimal`'s points, collected.
+fn flatten_near_optimal<C: BezierForm<2> + ?Sized>(
+    c: &C,
+    tol: f64,
+    depth: usize,
+) -> Result<Vec<bez_subdiv::FlatPoint>, bez_subdiv::SubdivError> {
+    Flattener::new(tol)
+        .with_method(bez_subdiv::Method::Optimal)
+        .with_max_depth(depth)
+        .flatten_to_vec(c)
+}
 
 fn lambda_curve() -> LambdaBezierCurve<2> {
     let p = vec![
@@ -107,11 +143,11 @@ fn mixed_curves_flatten_as_trait_objects_and_in_batches() {
     for curve in mixed {
         flatten_all(curve, 1e-4);
     }
-    let options = FlattenOptions::default();
-    let batch = flatten_batch(&[l.clone(), l.with_lambda(-1.0).unwrap()], &options);
-    assert_eq!(batch[0], flatten(&l, &options));
+    let flattener = Flattener::new(1e-4).with_method(bez_subdiv::Method::Optimal);
+    let batch = flattener.flatten_batch(&[l.clone(), l.with_lambda(-1.0).unwrap()]);
+    assert_eq!(batch[0], flattener.flatten_to_vec(&l));
     let beziers: Vec<BezierCurve<2>> = mixed.iter().map(|c| c.as_bezier().clone()).collect();
-    for (c, r) in mixed.iter().zip(flatten_batch(&beziers, &options)) {
-        assert_eq!(r.unwrap().polyline, flatten(*c, &options).unwrap().polyline);
+    for (c, r) in mixed.iter().zip(flattener.flatten_batch(&beziers)) {
+        assert_eq!(r, flattener.flatten_to_vec(*c));
     }
 }

@@ -16,7 +16,7 @@
 use std::process::ExitCode;
 
 use bez_core::{Vector2, bez_path_to_curves};
-use bez_subdiv::flatten_local_wang;
+use bez_subdiv::{Flattener, Method};
 
 const HEART: &str = "M 10,30 A 20,20 0,0,1 50,30 A 20,20 0,0,1 90,30 Q 90,60 50,90 Q 10,60 10,30 Z";
 
@@ -49,7 +49,9 @@ fn run(data: &str, tolerance: f64) -> Result<(), Box<dyn std::error::Error>> {
         let mut polyline: Vec<Vector2> = Vec::new();
         for curve in curves {
             // Every point of the curve is within `tolerance` of the polyline and back.
-            let points = flatten_local_wang(curve, tolerance, 40)?;
+            let points = Flattener::new(tolerance)
+                .with_method(Method::LocalWang)
+                .flatten_to_vec(curve)?;
             let skip = usize::from(!polyline.is_empty()); // shared end point of the last piece
             polyline.extend(points.iter().skip(skip).map(|p| p.point));
         }

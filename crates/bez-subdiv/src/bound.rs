@@ -4,9 +4,11 @@
 use bez_core::{BezierCurve, Vector2};
 
 use crate::error::SubdivError;
+#[cfg(feature = "paper")]
 use crate::flatten::curve_size;
 
 /// The largest second difference M = maxᵢ |Pᵢ − 2Pᵢ₊₁ + Pᵢ₊₂| (0 below degree 2).
+#[cfg(feature = "paper")]
 #[must_use]
 pub fn max_second_difference(curve: &BezierCurve<2>) -> f64 {
     second_difference_max(curve.points())
@@ -27,6 +29,7 @@ fn second_difference_max(points: &[Vector2]) -> f64 {
 /// through its end points by at most M i(n − i)/2 ≤ M n²/8 at control point i, and each de
 /// Casteljau halving divides the bound on the second differences by 4. This is Wang's formula
 /// adapted to eq. (3)'s relative tolerance. The fixed rule's depth never exceeds it (tested).
+#[cfg(feature = "paper")]
 #[must_use]
 pub fn wang_depth(curve: &BezierCurve<2>, tolerance: f64) -> usize {
     let n = curve.degree() as f64;

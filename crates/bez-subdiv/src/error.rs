@@ -55,6 +55,15 @@ pub enum SubdivError {
         /// The smallest tolerance accepted for this curve.
         min: f64,
     },
+    /// A measurement whose sampling asks for more work than
+    /// [`MAX_HAUSDORFF_WORK`](crate::MAX_HAUSDORFF_WORK).
+    #[error("the sampling needs about {work:e} operations, above the limit {limit:e}")]
+    SamplingTooLarge {
+        /// The work asked for.
+        work: f64,
+        /// The limit.
+        limit: f64,
+    },
     /// The 1-D optimizer failed.
     #[error("the split-parameter optimizer failed: {message}")]
     Optimizer {

@@ -1,13 +1,17 @@
-//! The fixed rule (t = ½) without per-piece allocation: the fast path of [`flatten`].
+//! Halving at t = ½ without per-piece allocation: the engine of the subdividing methods, and
+//! the fixed rule's fast path of [`flatten`].
 //!
 //! [`flatten`]: crate::flatten()
 
-use bez_core::{
-    BezierCurve, BezierForm, Vector2, de_casteljau_halve_array, de_casteljau_halve_in_place,
-};
+#[cfg(feature = "paper")]
+use bez_core::{BezierCurve, BezierForm};
+use bez_core::{Vector2, de_casteljau_halve_array, de_casteljau_halve_in_place};
 
 use crate::error::SubdivError;
-use crate::flatten::{DEFAULT_MAX_DEPTH, FlattenStats, curve_size, validate_with_depth};
+use crate::flatten::DEFAULT_MAX_DEPTH;
+#[cfg(feature = "paper")]
+use crate::flatten::{FlattenStats, curve_size, validate_with_depth};
+#[cfg(any(test, feature = "paper"))]
 use crate::measure::within_chord_line;
 
 /// The polyline of [`flatten`](crate::flatten()) with [`SplitRule::Fixed`](crate::SplitRule),
@@ -26,6 +30,7 @@ use crate::measure::within_chord_line;
 /// [`SubdivError::InvalidTolerance`], [`SubdivError::DepthLimit`],/// [`SubdivError::DepthTooLarge`] for `max_depth` above [`MAX_FLATTEN_DEPTH`](crate::MAX_FLATTEN_DEPTH),
 /// [`SubdivError::ToleranceBelowRounding`] below 16 ulps of the largest coordinate (checked
 /// before any work).
+#[cfg(feature = "paper")]
 pub fn flatten_fixed_into<C: BezierForm<2> + ?Sized>(
     curve: &C,
     tolerance: f64,
@@ -36,6 +41,7 @@ pub fn flatten_fixed_into<C: BezierForm<2> + ?Sized>(
 }
 
 /// [`flatten_fixed_into`] on the Bézier form (one instance for every curve type).
+#[cfg(feature = "paper")]
 fn fixed_into_bezier(
     curve: &BezierCurve<2>,
     tolerance: f64,

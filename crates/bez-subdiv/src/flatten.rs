@@ -1,7 +1,5 @@
 //! Adaptive subdivision ("flattening") with per-piece stopping by eq. (3).
 
-use std::time::{Duration, Instant};
-
 use bez_core::{BezierCurve, BezierForm, Vector2, de_casteljau_halve, de_casteljau_split};
 
 use crate::error::SubdivError;
@@ -86,10 +84,7 @@ pub struct FlattenStats {
 }
 
 /// The result of [`flatten`].
-///
-/// Equality compares the polyline, the pieces and the counts, not `elapsed`: two flattenings of
-/// the same input are equal.
-#[derive(Debug, Clone)]
+#[derive(Debug, Clone, PartialEq)]
 #[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 #[non_exhaustive]
 pub struct Flattening {
@@ -99,29 +94,6 @@ pub struct Flattening {
     pub pieces: Vec<Piece>,
     /// Counts.
     pub stats: FlattenStats,
-    /// Wall time of the [`flatten`] call (`std::time::Instant`); `None` on targets without a
-    /// clock (wasm32-unknown-unknown, where reading it would panic).
-    pub elapsed: Option<Duration>,
-}
-
-impl PartialEq for Flattening {
-    fn eq(&self, other: &Self) -> bool {
-        self.polyline == other.polyline && self.pieces == other.pieces && self.stats == other.stats
-    }
-}
-
-/// The time since `start`, where the target has a clock.
-fn elapsed_since(start: Option<Instant>) -> Option<Duration> {
-    start.map(|s| s.elapsed())
-}
-
-/// Now, where the target has a clock.
-fn now() -> Option<Instant> {
-    if cfg!(all(target_arch = "wasm32", target_os = "unknown")) {
-        None
-    } else {
-        Some(Instant::now())
-    }
 }
 
 /// The denominator of eq. (3): max(x extent, y extent) of the original control points.
@@ -197,7 +169,6 @@ fn flatten_bezier(
     curve: &BezierCurve<2>,
     options: &FlattenOptions,
 ) -> Result<Flattening, SubdivError> {
-    let start = now();
     let eps = options.tolerance;
     validate_with_depth(curve, eps, options.max_depth)?;
     let n = curve.points().len();
@@ -254,26 +225,13 @@ fn flatten_bezier(
         polyline,
         pieces,
         stats,
-        elapsed: elapsed_since(start),
     })
 }
 
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::test_support::{assert_typed_errors, curve};
-
-    #[test]
-    fn the_call_is_timed_and_equality_ignores_the_time() {
-        let c = curve(&[(0.0, 0.0), (1.0, 5.0), (2.0, 0.0)]);
-        let a = flatten(&c, &FlattenOptions::default()).unwrap();
-        let mut b = a.clone();
-        b.elapsed = None;
-        assert!(a.elapsed.is_some());
-        assert_eq!(a, b);
-        b.stats.splits += 1;
-        assert_ne!(a, b);
-    }
+    use crate::test_support::assert_typed_errors;
 
     #[test]
     fn errors_are_typed() {

@@ -169,6 +169,25 @@ impl Flattener {
         Ok(out)
     }
 
+    /// Flattens every curve of `curves` on its own, results in input order: with the `rayon`
+    /// feature on rayon's thread pool, otherwise one after the other on the calling thread
+    /// (`Sync` is asked in both cases, so that enabling the feature never breaks a caller).
+    #[must_use]
+    pub fn flatten_batch<C: BezierForm<2> + Sync>(
+        &self,
+        curves: &[C],
+    ) -> Vec<Result<Vec<FlatPoint>, SubdivError>> {
+        #[cfg(feature = "rayon")]
+        {
+            use rayon::prelude::*;
+            curves.par_iter().map(|c| self.flatten_to_vec(c)).collect()
+        }
+        #[cfg(not(feature = "rayon"))]
+        {
+            curves.iter().map(|c| self.flatten_to_vec(c)).collect()
+        }
+    }
+
     /// Streams one polyline through `curves` in order (a chain: each curve should start where
     /// the previous one ends); the joint of two curves is sent once, as the end of the first.
     /// Returns the number of segments.
@@ -367,6 +386,18 @@ mod tests {
         assert_eq!(segments, single);
         assert!(pts.windows(2).all(|w| w[0].point != w[1].point));
         assert_eq!(pts.last().unwrap().curve, 2);
+    }
+
+    #[test]
+    fn batch_equals_one_by_one() {
+        let cs = curves();
+        for method in [Method::Fast, Method::Optimal] {
+            let f = Flattener::new(1e-3).with_method(method);
+            let batch = f.flatten_batch(&cs);
+            for (c, r) in cs.iter().zip(batch) {
+                assert_eq!(r, f.flatten_to_vec(c));
+            }
+        }
     }
 
     #[cfg(feature = "kurbo")]

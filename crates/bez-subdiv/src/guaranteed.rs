@@ -1,6 +1,6 @@
 //! Beyond the paper: flattening with a guaranteed Hausdorff bound.
 
-use bez_core::{BezierCurve, BezierForm, Vector2};
+use bez_core::{BezierCurve, Vector2};
 
 use crate::error::SubdivError;
 use crate::fixed::halve_until;
@@ -29,7 +29,7 @@ pub fn distance_to_segment(p: &Vector2, a: &Vector2, b: &Vector2) -> f64 {
 }
 
 /// Whether every interior control point of `piece` lies within `tolerance` of the chord segment
-/// [P₀, Pₙ]: the acceptance test of [`flatten_guaranteed`].
+/// [P₀, Pₙ]: the acceptance test of [`stream_guaranteed`].
 ///
 /// Compared in squared distances, with one division per piece (the projection parameter
 /// s = (Pᵢ − P₀)·d / |d|², d = Pₙ − P₀, clamped to [0, 1]); [`distance_to_segment`] decides when
@@ -55,7 +55,7 @@ fn within_chord_segment(piece: &[Vector2], tolerance: f64) -> bool {
     })
 }
 
-/// Points B(tᵢ), 0 = t₀ < … < t_k = 1, whose polyline is within `tolerance` of the curve in
+/// `Method::Halving`: points B(tᵢ), 0 = t₀ < … < t_k = 1, whose polyline is within `tolerance` of the curve in
 /// Hausdorff distance (an absolute distance, in the curve's units).
 ///
 /// Pieces are halved until every control point lies within `tolerance` of the chord
@@ -64,7 +64,7 @@ fn within_chord_segment(piece: &[Vector2], tolerance: f64) -> bool {
 /// segment's end points continuously, its projection covers the segment, so every segment point
 /// is within `tolerance` of the piece too. Both directions of the Hausdorff distance are bounded,
 /// at cusps and loops as well. The points are exact curve points (de Casteljau end points).
-/// Halving runs without per-piece allocation (as [`flatten_fixed_into`](crate::flatten_fixed_into)).
+/// Halving runs without per-piece allocation.
 ///
 /// # Errors
 /// [`SubdivError::TooFewPoints`] for a degree-0 curve, [`SubdivError::InvalidTolerance`],
@@ -72,17 +72,7 @@ fn within_chord_segment(piece: &[Vector2], tolerance: f64) -> bool {
 /// (e.g. a tolerance below the rounding level of the coordinates);/// [`SubdivError::DepthTooLarge`] for `max_depth` above [`MAX_FLATTEN_DEPTH`](crate::MAX_FLATTEN_DEPTH),
 /// [`SubdivError::ToleranceBelowRounding`] below 16 ulps of the largest coordinate (checked
 /// before any work).
-pub fn flatten_guaranteed<C: BezierForm<2> + ?Sized>(
-    curve: &C,
-    tolerance: f64,
-    max_depth: usize,
-) -> Result<Vec<FlatPoint>, SubdivError> {
-    let mut out = Vec::new();
-    stream_guaranteed(curve.as_bezier(), tolerance, max_depth, |p| out.push(p))?;
-    Ok(out)
-}
-
-/// [`flatten_guaranteed`]'s points streamed to `sink`; returns the number of segments.
+/// Streamed to `sink`; returns the number of segments.
 pub(crate) fn stream_guaranteed(
     curve: &BezierCurve<2>,
     tolerance: f64,
@@ -181,7 +171,8 @@ mod tests {
                 .collect(),
         ] {
             let c = BezierCurve::new(pts).unwrap();
-            let flat = flatten_guaranteed(&c, 1e-3, 40).unwrap();
+            let mut flat = Vec::new();
+            stream_guaranteed(&c, 1e-3, 40, |p| flat.push(p)).unwrap();
             assert!(flat.len() > 2);
             assert_eq!((flat[0].t, flat[flat.len() - 1].t), (0.0, 1.0));
             for w in flat.windows(2) {
@@ -195,6 +186,6 @@ mod tests {
 
     #[test]
     fn errors_are_typed() {
-        assert_typed_errors(flatten_guaranteed);
+        assert_typed_errors(|c, tol, depth| stream_guaranteed(c, tol, depth, |_| {}));
     }
 }

@@ -5,6 +5,11 @@ use bez_core::{BezierCurve, BezierForm, Vector2};
 use crate::error::SubdivError;
 use crate::guaranteed::distance_to_segment;
 
+/// The most work [`measured_hausdorff`] accepts: 2³², counted as curve samples × segments plus
+/// segment samples × segments × control points (a nearest-point search costs about that
+/// many operations per control point).
+pub const MAX_HAUSDORFF_WORK: f64 = 4_294_967_296.0;
+
 /// How densely [`measured_hausdorff`] samples both sides.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 #[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
@@ -36,7 +41,8 @@ impl Default for HausdorffSampling {
 ///
 /// # Errors
 /// [`SubdivError::TooFewPoints`] when `polyline` is empty; [`SubdivError::Core`] when a
-/// polyline point is not finite.
+/// polyline point is not finite or the curve samples are above bez-core's limit;
+/// [`SubdivError::SamplingTooLarge`] above [`MAX_HAUSDORFF_WORK`] (checked first).
 ///
 /// ```
 /// use bez_core::{BezierCurve, Vector2};
@@ -68,6 +74,17 @@ fn hausdorff_bezier(
     let Some(&first) = polyline.first() else {
         return Err(SubdivError::TooFewPoints { got: 0 });
     };
+    // The work: every curve sample against every segment, and a nearest-point search per
+    // segment sample. Refused before it starts above MAX_HAUSDORFF_WORK.
+    let segments = polyline.len().max(2) - 1;
+    let work = (sampling.curve_samples as f64) * (segments as f64)
+        + (sampling.segment_samples as f64) * (segments as f64) * (curve.points().len() as f64);
+    if work > MAX_HAUSDORFF_WORK {
+        return Err(SubdivError::SamplingTooLarge {
+            work,
+            limit: MAX_HAUSDORFF_WORK,
+        });
+    }
     let to_polyline = |p: &Vector2| {
         if polyline.len() == 1 {
             return (p - first).norm();

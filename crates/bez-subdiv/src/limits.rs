@@ -3,7 +3,15 @@
 
 use bez_core::{BezierCurve, Vector2};
 
+use crate::bound::wang_steps;
 use crate::error::SubdivError;
+
+/// The largest Wang count (√(n(n − 1) M / (8 tol)), before rounding up) a subdividing
+/// flattening accepts: 2²⁰. Halving at ½ divides the second differences by 4 per level, so a
+/// piece is flat once its level reaches log₄ of n² M / (8 tol): the pieces number at most about
+/// twice Wang's count, each costing O(n²). Above the limit (a tolerance near the rounding floor
+/// of a high-degree curve), the work would run to minutes or hours.
+pub(crate) const MAX_SUBDIVISION_STEPS: f64 = (1u64 << 20) as f64;
 
 /// The largest `max_depth` a subdividing flattening accepts: 48. A piece at level 48 spans
 /// 2⁻⁴⁸ of the parameter range; its control points differ by a few ulps, where the flatness
@@ -20,7 +28,8 @@ pub(crate) fn rounding_floor(curve: &BezierCurve<2>) -> f64 {
 
 /// [`SubdivError::DepthTooLarge`] above [`MAX_FLATTEN_DEPTH`];
 /// [`SubdivError::ToleranceBelowRounding`] for an absolute tolerance below
-/// [`rounding_floor`] (a curve collapsed to the origin has floor 0 and passes).
+/// [`rounding_floor`] (a curve collapsed to the origin has floor 0 and passes);
+/// [`SubdivError::TooManySegments`] when Wang's count is above [`MAX_SUBDIVISION_STEPS`].
 pub(crate) fn check_work(
     curve: &BezierCurve<2>,
     tolerance: f64,
@@ -35,6 +44,13 @@ pub(crate) fn check_work(
     let min = rounding_floor(curve);
     if tolerance < min {
         return Err(SubdivError::ToleranceBelowRounding { tolerance, min });
+    }
+    let steps = wang_steps(curve.points(), tolerance);
+    if steps.is_nan() || steps > MAX_SUBDIVISION_STEPS {
+        return Err(SubdivError::TooManySegments {
+            tolerance,
+            limit: MAX_SUBDIVISION_STEPS as usize,
+        });
     }
     Ok(())
 }

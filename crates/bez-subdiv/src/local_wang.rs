@@ -1,30 +1,30 @@
 //! Beyond the paper: guaranteed flattening from local a-priori bounds, O(n) per point.
 
-use bez_core::{BezierCurve, BezierForm, HornerBernstein};
+use bez_core::{BezierCurve, HornerBernstein};
 
 use crate::bound::wang_steps;
 use crate::error::SubdivError;
 use crate::guaranteed::{FlatPoint, halve_to_points};
 
-/// Largest number of equal steps [`flatten_local_wang`] places on one piece; pieces that need
+/// Largest number of equal steps `Method::LocalWang` places on one piece; pieces that need
 /// more are halved first.
 pub const LOCAL_WANG_STEPS: usize = 16;
 
-/// Points B(tᵢ), 0 = t₀ < … < t_k = 1, whose polyline is within `tolerance` (absolute) of the
+/// `Method::LocalWang`: points B(tᵢ), 0 = t₀ < … < t_k = 1, whose polyline is within `tolerance` (absolute) of the
 /// curve in Hausdorff distance, placed by Wang's bound applied piece by piece.
 ///
 /// For a piece Q of degree n on [t₀, t₁], Wang's formula bounds the deviation of the chords of
 /// k equal parameter steps by n(n − 1)/8 · maxᵢ |Δ²Qᵢ| / k² (the linear interpolation error
 /// h²/8 · max|Q''|, with |Q''| bounded by the convex hull of its control points; see
 /// [`wang_segment_count`](crate::wang_segment_count)). The curve is halved at t = ½ (de
-/// Casteljau, as [`flatten_guaranteed`](crate::flatten_guaranteed)) until a piece needs at
+/// Casteljau, as [`stream_guaranteed`](crate::guaranteed::stream_guaranteed)) until a piece needs at
 /// most [`LOCAL_WANG_STEPS`] steps, k = ⌈√(n(n − 1) M / (8 tol))⌉; the piece's k − 1 interior
 /// points are then evaluated by Horner's rule on the whole curve, O(n) each, and its end point
 /// is the halving's. Since halving divides the second differences by about 4, local bounds
 /// follow the curve's actual bending, unlike the single global count of
 /// `wang_segment_count`.
 ///
-/// Against [`flatten_guaranteed`](crate::flatten_guaranteed): the same bound in both
+/// Against [`stream_guaranteed`](crate::guaranteed::stream_guaranteed): the same bound in both
 /// directions (each chord point is within the bound of the curve point at the same parameter
 /// and vice versa), up to the rounding of the evaluated points (about n · 2⁻⁵³ of the
 /// coordinates); far fewer O(n²) halvings at high degree (one per up to
@@ -39,29 +39,7 @@ pub const LOCAL_WANG_STEPS: usize = 16;
 /// [`SubdivError::ToleranceBelowRounding`] below 16 ulps of the largest coordinate (checked
 /// before any work).
 ///
-/// ```
-/// use bez_core::{BezierCurve, Vector2};
-/// use bez_subdiv::flatten_local_wang;
-///
-/// let curve = BezierCurve::new(vec![
-///     Vector2::new(0.0, 0.0), Vector2::new(1.0, 2.0),
-///     Vector2::new(3.0, -1.0), Vector2::new(4.0, 1.0),
-/// ])?;
-/// let points = flatten_local_wang(&curve, 1e-3, 40)?;
-/// assert_eq!((points[0].t, points[points.len() - 1].t), (0.0, 1.0));
-/// # Ok::<(), bez_subdiv::SubdivError>(())
-/// ```
-pub fn flatten_local_wang<C: BezierForm<2> + ?Sized>(
-    curve: &C,
-    tolerance: f64,
-    max_depth: usize,
-) -> Result<Vec<FlatPoint>, SubdivError> {
-    let mut out = Vec::new();
-    stream_local_wang(curve.as_bezier(), tolerance, max_depth, |p| out.push(p))?;
-    Ok(out)
-}
-
-/// [`flatten_local_wang`]'s points streamed to `sink`; returns the number of segments.
+/// Streamed to `sink`; returns the number of segments.
 pub(crate) fn stream_local_wang(
     curve: &BezierCurve<2>,
     tolerance: f64,
@@ -101,6 +79,17 @@ mod tests {
     use crate::hausdorff::{HausdorffSampling, measured_hausdorff};
     use crate::test_support::assert_typed_errors;
     use crate::wang_segment_count;
+
+    /// The points of [`stream_local_wang`], collected.
+    fn flatten_local_wang(
+        c: &BezierCurve<2>,
+        tol: f64,
+        depth: usize,
+    ) -> Result<Vec<FlatPoint>, SubdivError> {
+        let mut out = Vec::new();
+        stream_local_wang(c, tol, depth, |p| out.push(p))?;
+        Ok(out)
+    }
 
     #[test]
     fn within_tolerance_and_ordered_on_random_cusp_and_loop_curves() {

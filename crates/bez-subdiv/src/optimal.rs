@@ -18,9 +18,6 @@ const MAX_CUBIC_CELLS: usize = 200;
 /// Above degree 3, the curve is halved until each piece needs at most this many of Wang's
 /// steps; the pieces' control polygons then bound the third and fourth derivatives.
 const PIECE_WANG_STEPS: f64 = 16.0;
-/// Wang's count above which a curve of degree > 3 is refused before halving: the pieces would
-/// number in the hundreds of thousands.
-const MAX_PIECE_WANG_STEPS: f64 = (1u64 << 24) as f64;
 /// A step whose bound is below this fraction of the tolerance is tried once longer (0.9: the
 /// count on random cubics drops by about 1 %, for about 20 % more time than without).
 const EXTEND_BELOW: f64 = 0.9;
@@ -553,13 +550,6 @@ fn optimal_bezier(
         };
         place(&mut march, &nodes[..=cells], &bound, first, last)?;
         return Ok(march.segments);
-    }
-    let wang = wang_steps(p, tolerance);
-    if wang.is_nan() || wang > MAX_PIECE_WANG_STEPS {
-        return Err(SubdivError::TooManySegments {
-            tolerance,
-            limit: MAX_OPTIMAL_SEGMENTS,
-        });
     }
     let d1 = hodograph_slice(p);
     let general = General {

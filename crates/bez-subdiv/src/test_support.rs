@@ -23,7 +23,7 @@ pub(crate) fn assert_typed_errors<T: core::fmt::Debug>(
             "tolerance {bad}: {result:?}"
         );
     }
-    let result = flatten(&c, 1e-12, 3);
+    let result = flatten(&c, 1e-9, 3);
     assert!(
         matches!(result, Err(SubdivError::DepthLimit { limit: 3 })),
         "{result:?}"

@@ -7,7 +7,7 @@ use crate::bound::wang_segment_count;
 use crate::error::SubdivError;
 use crate::guaranteed::FlatPoint;
 
-/// The most segments one call of [`flatten_wang`] produces: 2²⁴. A tolerance that needs more
+/// The most segments one call of [`Method::Fast`](crate::Method::Fast) produces: 2²⁴. A tolerance that needs more
 /// (below the rounding of the coordinates, in practice) is refused before any point is made.
 pub const MAX_WANG_SEGMENTS: usize = 1 << 24;
 
@@ -19,7 +19,7 @@ pub const MAX_WANG_SEGMENTS: usize = 1 << 24;
 /// points ([`wang_segment_count`]): the chord of a parameter step h interpolates B within
 /// h²/8 · max|B''| and |B''| ≤ n(n − 1) M. The same count as lyon_geom's
 /// `for_each_flattened` for quadratics and cubics (about twice the optimal count on curved
-/// pieces; [`flatten_near_optimal`](crate::flatten_near_optimal) places about half as many);
+/// pieces; `Method::Optimal` places about half as many);
 /// no subdivision, no allocation. Points: up to degree 3 by Horner's rule on the power form
 /// relative to P₀ (a few multiply-adds per point, and a translation of the curve changes
 /// nothing but the added P₀); above, by [`HornerBernstein`], O(n) per point. The first and
@@ -29,21 +29,7 @@ pub const MAX_WANG_SEGMENTS: usize = 1 << 24;
 /// [`SubdivError::TooFewPoints`] for a degree-0 curve, [`SubdivError::InvalidTolerance`],
 /// [`SubdivError::TooManySegments`] above [`MAX_WANG_SEGMENTS`].
 ///
-/// ```
-/// use bez_core::{BezierCurve, Vector2};
-/// use bez_subdiv::flatten_wang;
-///
-/// let curve = BezierCurve::new(vec![
-///     Vector2::new(0.0, 0.0), Vector2::new(1.0, 2.0),
-///     Vector2::new(3.0, -1.0), Vector2::new(4.0, 1.0),
-/// ])?;
-/// let mut polyline = Vec::new();
-/// let segments = flatten_wang(&curve, 1e-3, |p| polyline.push(p.point))?;
-/// assert_eq!(polyline.len(), segments + 1);
-/// assert_eq!(polyline[segments], Vector2::new(4.0, 1.0));
-/// # Ok::<(), bez_subdiv::SubdivError>(())
-/// ```
-pub fn flatten_wang<C: BezierForm<2> + ?Sized>(
+pub(crate) fn flatten_wang<C: BezierForm<2> + ?Sized>(
     curve: &C,
     tolerance: f64,
     mut sink: impl FnMut(FlatPoint),

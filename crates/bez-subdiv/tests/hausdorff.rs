@@ -12,10 +12,32 @@ mod common;
 
 use common::hausdorff;
 
-use bez_subdiv::{
-    FlattenOptions, flatten, flatten_guaranteed, flatten_near_optimal, optimal_segment_count,
-};
+use bez_subdiv::{FlattenOptions, flatten, optimal_segment_count};
 use proptest::prelude::*;
+
+/// `Method::Halving`'s points, collected.
+fn flatten_guaranteed(
+    c: &BezierCurve<2>,
+    tol: f64,
+    depth: usize,
+) -> Result<Vec<bez_subdiv::FlatPoint>, bez_subdiv::SubdivError> {
+    bez_subdiv::Flattener::new(tol)
+        .with_method(bez_subdiv::Method::Halving)
+        .with_max_depth(depth)
+        .flatten_to_vec(c)
+}
+
+/// `Method::Optimal`'s points, collected.
+fn flatten_near_optimal(
+    c: &BezierCurve<2>,
+    tol: f64,
+    depth: usize,
+) -> Result<Vec<bez_subdiv::FlatPoint>, bez_subdiv::SubdivError> {
+    bez_subdiv::Flattener::new(tol)
+        .with_method(bez_subdiv::Method::Optimal)
+        .with_max_depth(depth)
+        .flatten_to_vec(c)
+}
 
 fn cusp() -> BezierCurve<2> {
     bez_subdiv::cases::cusp().unwrap()

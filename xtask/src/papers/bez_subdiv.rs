@@ -12,6 +12,7 @@ use crate::DynError;
 use crate::tables::Table;
 
 mod nstar;
+mod standing;
 pub(super) use nstar::hausdorff;
 
 /// The paper's Table 1, as printed: degree, then (time s, iterations) for the fixed, flatness
@@ -182,5 +183,6 @@ pub(crate) fn tables() -> Result<Vec<Table>, DynError> {
             checked: json!({ "rows": rows_json }),
         },
         nstar::nstar_table()?,
+        standing::standing_table()?,
     ])
 }

@@ -96,9 +96,10 @@ fn fixed_chords(c: &BezierCurve<2>, tol: f64, out: &mut Vec<Vector2>) -> Result<
 }
 
 fn guaranteed(c: &BezierCurve<2>, tol: f64, out: &mut Vec<Vector2>) -> Result<(), DynError> {
-    let pts = bez_subdiv::flatten_guaranteed(c, tol, 40)?;
     out.clear();
-    out.extend(pts.into_iter().map(|p| p.point));
+    bez_subdiv::Flattener::new(tol)
+        .with_method(bez_subdiv::Method::Halving)
+        .flatten(c, |p| out.push(p.point))?;
     Ok(())
 }
 
@@ -164,7 +165,7 @@ pub(crate) fn table() -> Result<Table, DynError> {
     let mut md = format!(
         "### bez-subdiv beside kurbo and lyon_geom: cubics at the same absolute tolerance (tol = {EPS} × size)\n\n\
          Error: measured Hausdorff distance between polyline and curve (20,001 curve samples to the polyline, exact nearest curve points from 5 points per segment) divided by tol.\n\
-         Time: in-process, interleaved: {ROUNDS} rounds, each of which calls every method on every cubic in turn for about {ROUND_MICROS} µs; a method's time is its fastest round, on the machine that wrote this file, output written into one reused `Vec` (the guaranteed mode returns a new one); not checked. Ratio: time / kurbo's time on the same curve. The last row of each cubic runs the fixed rule at the loosest ε × 2^(k/8), k = 0..24, whose control polygons are measured within tol (the same accuracy as the other rows; eq. (3)'s pieces at ε stay far inside it).\n\n\
+         Time: in-process, interleaved: {ROUNDS} rounds, each of which calls every method on every cubic in turn for about {ROUND_MICROS} µs; a method's time is its fastest round, on the machine that wrote this file, output written into one reused `Vec`; not checked. Ratio: time / kurbo's time on the same curve. The last row of each cubic runs the fixed rule at the loosest ε × 2^(k/8), k = 0..24, whose control polygons are measured within tol (the same accuracy as the other rows; eq. (3)'s pieces at ε stay far inside it).\n\n\
          | curve | method | segments | error / tol | time (µs) | time per segment (ns) | ratio to kurbo |\n\
          |---|---|---|---|---|---|---|\n"
     );

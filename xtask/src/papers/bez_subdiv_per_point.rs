@@ -5,8 +5,8 @@ use std::fmt::Write as _;
 use std::hint::black_box;
 
 use bez_core::{BezierCurve, Vector2};
-use bez_subdiv::FlattenOptions;
 use bez_subdiv::cases::degree25_curve;
+use bez_subdiv::{FlattenOptions, Flattener, Method};
 use serde_json::{Value, json};
 
 use super::bez_subdiv::rules;
@@ -48,16 +48,16 @@ fn modes() -> Vec<Mode> {
         ));
     }
     modes.push((
-        "guaranteed (halving), `flatten_guaranteed`".into(),
-        Box::new(|c, tol, out| points(bez_subdiv::flatten_guaranteed(c, tol, 40)?, out)),
+        "guaranteed (halving), `Method::Halving`".into(),
+        Box::new(|c, tol, out| points(c, tol, Method::Halving, out)),
     ));
     modes.push((
-        "guaranteed (local Wang), `flatten_local_wang`".into(),
-        Box::new(|c, tol, out| points(bez_subdiv::flatten_local_wang(c, tol, 40)?, out)),
+        "guaranteed (local Wang), `Method::LocalWang`".into(),
+        Box::new(|c, tol, out| points(c, tol, Method::LocalWang, out)),
     ));
     modes.push((
-        "near-optimal, `flatten_near_optimal`".into(),
-        Box::new(|c, tol, out| points(bez_subdiv::flatten_near_optimal(c, tol, 40)?, out)),
+        "near-optimal, `Method::Optimal`".into(),
+        Box::new(|c, tol, out| points(c, tol, Method::Optimal, out)),
     ));
     modes
 }
@@ -67,9 +67,17 @@ fn fixed(c: &BezierCurve<2>, tol: f64, out: &mut Vec<Vector2>) -> Result<(), Dyn
     Ok(())
 }
 
-fn points(flat: Vec<bez_subdiv::FlatPoint>, out: &mut Vec<Vector2>) -> Result<(), DynError> {
+/// The points of `method`, streamed into `out` (cleared first, its capacity reused).
+fn points(
+    c: &BezierCurve<2>,
+    tol: f64,
+    method: Method,
+    out: &mut Vec<Vector2>,
+) -> Result<(), DynError> {
     out.clear();
-    out.extend(flat.into_iter().map(|p| p.point));
+    Flattener::new(tol)
+        .with_method(method)
+        .flatten(c, |p| out.push(p.point))?;
     Ok(())
 }
 

@@ -4,9 +4,9 @@ use std::fmt::Write as _;
 
 use bez_core::{BezierCurve, Vector2};
 use bez_subdiv::{
-    FlattenOptions, Flattening, HausdorffSampling, SplitRule, chord_deviation, curve_size, flatten,
-    flatten_guaranteed, flatten_local_wang, flatten_near_optimal, max_chord_distance,
-    measured_hausdorff, optimal_segment_count, wang_depth, wang_segment_count,
+    FlattenOptions, Flattener, Flattening, HausdorffSampling, Method, SplitRule, chord_deviation,
+    curve_size, flatten, max_chord_distance, measured_hausdorff, optimal_segment_count, wang_depth,
+    wang_segment_count,
 };
 use serde_json::json;
 
@@ -144,9 +144,12 @@ pub(crate) fn nstar_table() -> Result<Table, DynError> {
                 "depth": f.stats.depth,
             }));
         }
-        let g = flatten_guaranteed(&c, tol, 40)?;
-        let w = flatten_local_wang(&c, tol, 40)?;
-        let o = flatten_near_optimal(&c, tol, 40)?;
+        let with = |m: Method| Flattener::new(tol).with_method(m).flatten_to_vec(&c);
+        let (g, w, o) = (
+            with(Method::Halving)?,
+            with(Method::LocalWang)?,
+            with(Method::Optimal)?,
+        );
         let mut mode_json = Vec::new();
         for (mode, points) in modes.iter().zip([&g, &w, &o]) {
             let poly: Vec<_> = points.iter().map(|p| p.point).collect();

@@ -114,6 +114,12 @@ pub enum SubdivFitError {
         /// The largest size accepted.
         max: usize,
     },
+    /// SVG path data that do not parse.
+    #[error("invalid SVG path data: {reason}")]
+    InvalidPathData {
+        /// The parser's message.
+        reason: String,
+    },
     /// A given corner index is not a data index.
     #[error("corner index {index} is outside the {points} data points")]
     CornerOutOfRange {

@@ -4,15 +4,17 @@
 
 use bez_core::Vector;
 
+use crate::assess::{assess, chord_params};
 use crate::banded::CyclicBand;
 use crate::bspline::bspline_basis;
 use crate::chord::ChordLengths;
 use crate::corners::detect_corners;
 use crate::curvature::feature_points;
-use crate::curve::{Closure, combine};
-use crate::distance::{foot_point_ctrl, point_polyline_distance};
+use crate::curve::Closure;
+use crate::distance::foot_point_ctrl;
 use crate::error::BestCurve;
-use crate::insertion::{Verdict, insert_points, segment_range};
+use crate::insertion::{insert_points, segment_range};
+use crate::reduction::reduce;
 use crate::seeding::seed;
 use crate::tridiagonal::solve_tridiagonal;
 use crate::{SubdivCurve, SubdivFitError};
@@ -68,6 +70,19 @@ pub enum Seeding {
     /// the tolerance (a circle at relative tolerance 10⁻³ gets 12). Independent of the sampling
     /// density, insensitive to noise below a quarter of the tolerance.
     Scaled,
+}
+
+/// What happens after the loop has met the tolerance.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
+#[non_exhaustive]
+pub enum Reduction {
+    /// Nothing: the curve of the last round (the paper).
+    Off,
+    /// Regular fitting points are removed, those in the segments of smallest error first, while
+    /// the error stays within the tolerance (re-solving the polygon each time; polygons above
+    /// [`MAX_REDUCED`](crate::MAX_REDUCED) points are left as they are).
+    RemovePoints,
 }
 
 /// The largest number of data points [`fit`] accepts: 2²⁴ (bez-core's `MAX_SAMPLES`).
@@ -126,6 +141,9 @@ pub struct FitOptions {
     pub samples_per_segment: usize,
     /// Insertion rule. Default [`Insertion::Bisect`].
     pub insertion: Insertion,
+    /// After convergence. Default [`Reduction::RemovePoints`] ([`Reduction::Off`] in the paper's
+    /// configuration).
+    pub reduction: Reduction,
 }
 
 impl FitOptions {
@@ -144,6 +162,7 @@ impl FitOptions {
             mode: FitMode::Interpolate,
             samples_per_segment: 32,
             insertion: Insertion::Bisect,
+            reduction: Reduction::RemovePoints,
         }
     }
 
@@ -155,6 +174,7 @@ impl FitOptions {
             measure: ErrorMeasure::DataToCurve,
             seeding: Seeding::CurvatureMaxima,
             sharp_angle: 140f64.to_radians(),
+            reduction: Reduction::Off,
             ..Self::new(tolerance)
         }
     }
@@ -229,6 +249,13 @@ impl FitOptions {
         self
     }
 
+    /// With `reduction` set to `value` (what happens after convergence).
+    #[must_use]
+    pub fn with_reduction(mut self, value: Reduction) -> Self {
+        self.reduction = value;
+        self
+    }
+
     /// With `insertion` set to `value` (the insertion rule).
     #[must_use]
     pub fn with_insertion(mut self, value: Insertion) -> Self {
@@ -267,6 +294,9 @@ pub struct Fit<const D: usize> {
     pub initial: Vec<usize>,
     /// One report per round, round 0 first.
     pub reports: Vec<RoundReport>,
+    /// The report of the curve after [`Reduction::RemovePoints`] (its `round` is that of the last
+    /// round), when points were removed.
+    pub reduced: Option<RoundReport>,
 }
 
 impl<const D: usize> Fit<D> {
@@ -276,10 +306,11 @@ impl<const D: usize> Fit<D> {
         self.reports.len().saturating_sub(1)
     }
 
-    /// The last round's report.
+    /// The report of the returned curve: after the reduction if points were removed, else the
+    /// last round's.
     #[must_use]
     pub fn last(&self) -> Option<&RoundReport> {
-        self.reports.last()
+        self.reduced.as_ref().or(self.reports.last())
     }
 }
 
@@ -592,11 +623,24 @@ pub fn fit_with_corners<const D: usize>(
             ErrorMeasure::TwoSided => assessment.max_d2c.max(assessment.max_c2d),
         };
         if worst <= options.tolerance {
+            let (curve, fitting, reduced) = match options.reduction {
+                Reduction::Off => (curve, fitting, None),
+                Reduction::RemovePoints => reduced_fit(
+                    data,
+                    fitting,
+                    curve,
+                    assessment.driven,
+                    closed,
+                    options,
+                    round,
+                ),
+            };
             return Ok(Fit {
                 curve,
                 fitting: fitting.iter().map(|f| f.0).collect(),
                 initial,
                 reports,
+                reduced,
             });
         }
         if best.as_ref().is_none_or(|b| worst < b.1) {
@@ -625,6 +669,35 @@ pub fn fit_with_corners<const D: usize>(
     }
 }
 
+/// [`Reduction::RemovePoints`] on a converged fit, checked once more on every segment (the
+/// converged fit is kept if that check fails).
+fn reduced_fit<const D: usize>(
+    data: &[Vector<D>],
+    fitting: Vec<(usize, bool)>,
+    curve: SubdivCurve<D>,
+    mut errors: Vec<f64>,
+    closed: bool,
+    options: &FitOptions,
+    round: usize,
+) -> (SubdivCurve<D>, Vec<(usize, bool)>, Option<RoundReport>) {
+    let (mut f, mut c) = (fitting.clone(), curve.clone());
+    if reduce(data, &mut f, &mut c, &mut errors, closed, options) == 0 {
+        return (curve, fitting, None);
+    }
+    let a = assess(data, &f, &c, closed, options);
+    if a.driven.iter().any(|&e| e > options.tolerance) {
+        return (curve, fitting, None);
+    }
+    let report = RoundReport {
+        round,
+        control_points: f.len(),
+        max_data_to_curve: a.max_d2c,
+        rms_data_to_curve: a.rms_d2c,
+        max_curve_to_data: a.max_c2d,
+    };
+    (c, f, Some(report))
+}
+
 fn split_largest_gap(fitting: &mut Vec<(usize, bool)>, n: usize) {
     if fitting.is_empty() {
         fitting.push((0, false));
@@ -651,7 +724,7 @@ fn split_largest_gap(fitting: &mut Vec<(usize, bool)>, n: usize) {
 }
 
 /// Solves eq. (4) (and, in least-squares mode, the least-squares refinement).
-fn solve_curve<const D: usize>(
+pub(crate) fn solve_curve<const D: usize>(
     data: &[Vector<D>],
     fitting: &[(usize, bool)],
     closed: bool,
@@ -787,115 +860,4 @@ fn least_squares<const D: usize>(
         return Err(SubdivFitError::SingularSystem { size: u });
     }
     SubdivCurve::new(points, sharp.to_vec(), curve.closure())
-}
-
-/// Chord-length parameters of data a..=b (indices mod n), the paper's Newton start (Sec. 5).
-fn chord_params<const D: usize>(data: &[Vector<D>], a: usize, b: usize) -> Vec<f64> {
-    let n = data.len();
-    let mut acc = Vec::with_capacity(b - a + 1);
-    let mut s = 0.0;
-    acc.push(0.0);
-    for i in a..b {
-        s += (data[(i + 1) % n] - data[i % n]).norm();
-        acc.push(s);
-    }
-    if s > 0.0 {
-        for x in &mut acc {
-            *x = (*x / s).clamp(0.0, 1.0);
-        }
-    }
-    acc
-}
-
-struct Assessment {
-    max_d2c: f64,
-    rms_d2c: f64,
-    max_c2d: f64,
-    verdicts: Vec<Verdict>,
-}
-
-fn assess<const D: usize>(
-    data: &[Vector<D>],
-    fitting: &[(usize, bool)],
-    curve: &SubdivCurve<D>,
-    closed: bool,
-    options: &FitOptions,
-) -> Assessment {
-    let n = data.len();
-    let tol = options.tolerance;
-    let (mut max_d2c, mut sum2, mut count, mut max_c2d) = (0.0_f64, 0.0, 0usize, 0.0_f64);
-    let mut verdicts = Vec::new();
-    let segs = curve.segment_count();
-    let mut poly: Vec<Vector<D>> = Vec::new();
-    for j in 0..segs {
-        let (a, b) = segment_range(fitting, j, n);
-        let Ok(ctrl) = curve.segment_controls(j) else {
-            verdicts.push(Verdict {
-                fails: false,
-                worst_point: None,
-            });
-            continue;
-        };
-        let chord = chord_params(data, a, b);
-        let (mut seg_max, mut seg_arg) = (0.0_f64, None);
-        for (off, t0) in chord.iter().enumerate() {
-            // The segment's end data points are counted once, by the segment that starts there
-            // (for open data the last point also by the last segment).
-            let last_of_open = !closed && j + 1 == segs && off + 1 == chord.len();
-            if off + 1 == chord.len() && !last_of_open {
-                continue;
-            }
-            let v = data[(a + off) % n];
-            let (_, d) = foot_point_ctrl(&ctrl, &v, *t0);
-            sum2 += d * d;
-            count += 1;
-            if d > seg_max {
-                seg_max = d;
-                if off > 0 && a + off < b {
-                    seg_arg = Some((a + off) % n);
-                }
-            }
-        }
-        max_d2c = max_d2c.max(seg_max);
-        let mut verdict = Verdict {
-            fails: seg_max > tol,
-            worst_point: seg_arg.filter(|_| seg_max > tol),
-        };
-        if options.measure == ErrorMeasure::TwoSided || !verdict.fails {
-            poly.clear();
-            poly.extend((a..=b).map(|i| data[i % n]));
-            let s = options.samples_per_segment;
-            let (mut worst, mut worst_u) = (0.0_f64, 0.0);
-            for m in 0..=s {
-                let u = m as f64 / s as f64;
-                let d = point_polyline_distance(&combine(&ctrl, bspline_basis(u)), &poly);
-                if d > worst {
-                    worst = d;
-                    worst_u = u;
-                }
-            }
-            max_c2d = max_c2d.max(worst);
-            if options.measure == ErrorMeasure::TwoSided && !verdict.fails && worst > tol {
-                let p = combine(&ctrl, bspline_basis(worst_u));
-                verdict = Verdict {
-                    fails: true,
-                    worst_point: (a + 1..b)
-                        .map(|i| (i % n, (data[i % n] - p).norm()))
-                        .min_by(|x, y| x.1.total_cmp(&y.1))
-                        .map(|x| x.0),
-                };
-            }
-        }
-        verdicts.push(verdict);
-    }
-    Assessment {
-        max_d2c,
-        rms_d2c: if count > 0 {
-            (sum2 / count as f64).sqrt()
-        } else {
-            0.0
-        },
-        max_c2d,
-        verdicts,
-    }
 }

@@ -60,6 +60,7 @@
 //! # Ok::<(), subdiv_fit::SubdivFitError>(())
 //! ```
 
+mod assess;
 mod banded;
 mod bspline;
 #[cfg(feature = "paper")]
@@ -74,6 +75,9 @@ pub mod eigen;
 mod error;
 mod fit;
 mod insertion;
+#[cfg(feature = "kurbo")]
+mod path;
+mod reduction;
 mod seeding;
 mod segment;
 mod svg;
@@ -87,9 +91,14 @@ pub use crate::distance::{foot_point, point_polyline_distance};
 pub use crate::error::{BestCurve, SubdivFitError};
 pub use crate::fit::{
     ErrorMeasure, Fit, FitMode, FitOptions, Insertion, MAX_DATA_COORDINATE, MAX_FEATURE_SCALE,
-    MAX_FIT_POINTS, MAX_ROUNDS, MAX_SAMPLES_PER_SEGMENT, RoundReport, Seeding, fit,
+    MAX_FIT_POINTS, MAX_ROUNDS, MAX_SAMPLES_PER_SEGMENT, Reduction, RoundReport, Seeding, fit,
     fit_with_corners, scaled_corners,
 };
+#[cfg(feature = "kurbo")]
+pub use crate::path::{
+    PATH_CORNER_ANGLE, SampledContour, fit_bez_path, sample_bez_path, sample_svg_path,
+};
+pub use crate::reduction::MAX_REDUCED;
 pub use crate::segment::Segment;
 pub use crate::svg::svg_path;
 pub use bez_core::{Vector, Vector2, Vector3};

@@ -2,8 +2,8 @@
 
 use subdiv_fit::cases::{closed_petals, open_wave, rippled_petals};
 use subdiv_fit::{
-    ErrorMeasure, FitMode, FitOptions, Insertion, SubdivCurve, SubdivFitError, Vector2, Vector3,
-    discrete_curvature, feature_points, fit, point_polyline_distance, scaled_corners,
+    ErrorMeasure, FitMode, FitOptions, Insertion, Reduction, SubdivCurve, SubdivFitError, Vector2,
+    Vector3, discrete_curvature, feature_points, fit, point_polyline_distance, scaled_corners,
 };
 
 #[allow(clippy::unwrap_used, reason = "test helper")]
@@ -227,9 +227,10 @@ fn bad_input_gives_typed_errors() {
 #[test]
 fn bisection_beats_max_error_insertion() {
     let data = open_wave(10);
-    let literal = FitOptions::new(0.01).with_insertion(Insertion::MaxError);
+    let bisect = FitOptions::new(0.01).with_reduction(Reduction::Off);
+    let literal = bisect.with_insertion(Insertion::MaxError);
     let m = fit(&data, subdiv_fit::Closure::Open, &literal).unwrap();
-    let b = fit(&data, subdiv_fit::Closure::Open, &FitOptions::new(0.01)).unwrap();
+    let b = fit(&data, subdiv_fit::Closure::Open, &bisect).unwrap();
     all_within(&data, &m, 0.01);
     all_within(&data, &b, 0.01);
     assert!(b.rounds() < m.rounds(), "{} vs {}", b.rounds(), m.rounds());

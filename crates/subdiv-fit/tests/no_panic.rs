@@ -13,8 +13,8 @@ use bez_core::{BezierForm, MAX_COORDINATE};
 use proptest::prelude::*;
 use subdiv_fit::{
     BestCurve, Closure, CurvePoint, ErrorMeasure, FeaturePoint, Fit, FitMode, FitOptions,
-    Insertion, MAX_DATA_COORDINATE, MAX_FEATURE_SCALE, MAX_FIT_POINTS, MAX_ROUNDS,
-    MAX_SAMPLES_PER_SEGMENT, RoundReport, SCALE_RATIO, Seeding, Segment, SubdivCurve,
+    Insertion, MAX_DATA_COORDINATE, MAX_FEATURE_SCALE, MAX_FIT_POINTS, MAX_REDUCED, MAX_ROUNDS,
+    MAX_SAMPLES_PER_SEGMENT, Reduction, RoundReport, SCALE_RATIO, Seeding, Segment, SubdivCurve,
     SubdivFitError, Vector2, Vector3, bspline_basis, bspline_basis_d1, bspline_basis_d2,
     bspline_to_bezier, discrete_curvature, feature_points, fit, fit_with_corners, foot_point,
     point_polyline_distance, scaled_corners, svg_path, turning_angle,
@@ -94,7 +94,7 @@ fn options() -> impl Strategy<Value = FitOptions> {
             Just(MAX_SAMPLES_PER_SEGMENT + 1),
             Just(1_000_000_000)
         ],
-        any::<(bool, bool, bool, bool)>(),
+        any::<(bool, bool, bool, bool, bool)>(),
     )
         .prop_map(
             |((tol, angle), scale, (floor, prominence), rounds, samples, flags)| {
@@ -130,6 +130,11 @@ fn options() -> impl Strategy<Value = FitOptions> {
                     } else {
                         Insertion::MaxError
                     })
+                    .with_reduction(if flags.4 {
+                        Reduction::RemovePoints
+                    } else {
+                        Reduction::Off
+                    })
             },
         )
 }
@@ -160,6 +165,12 @@ fn check_fit(result: &Result<Fit<2>, SubdivFitError>, n: usize) -> Result<(), Te
             prop_assert_eq!(f.fitting.len(), f.curve.points().len());
             prop_assert!(f.initial.iter().all(|&i| i < n));
             prop_assert!(f.last().is_some() && f.rounds() + 1 == f.reports.len());
+            prop_assert!(f.reduced.iter().all(report_ok));
+            prop_assert_eq!(
+                f.last().map(|r| r.control_points),
+                Some(f.curve.points().len())
+            );
+            prop_assert!(f.curve.points().len() <= MAX_REDUCED || f.reduced.is_none());
             prop_assert!(svg_path(&f.curve).is_ok());
         }
         Err(SubdivFitError::NoConvergence {
@@ -291,6 +302,93 @@ proptest! {
         check_fit(&fit(&data, closure, &opts), data.len())?;
         check_fit(&fit(&data, closure, &FitOptions::paper(tol)), data.len())?;
         check_fit(&fit(&data, closure, &FitOptions::new(1e-3).with_tolerance(tol)), data.len())?;
+    }
+}
+
+/// Paths in and out: wild path data, spacings and options never panic; an `Ok` holds finite
+/// samples and paths.
+#[cfg(feature = "kurbo")]
+mod paths {
+    use super::*;
+    use subdiv_fit::{
+        PATH_CORNER_ANGLE, SampledContour, fit_bez_path, sample_bez_path, sample_svg_path,
+    };
+
+    fn sampled_ok(contours: &[SampledContour]) -> bool {
+        contours.iter().all(|c| {
+            c.points.iter().all(finite)
+                && c.corners.iter().all(|&i| i < c.points.len())
+                && c.points.windows(2).all(|w| w[0] != w[1])
+        })
+    }
+
+    proptest! {
+        #![proptest_config(ProptestConfig::with_cases(128))]
+
+        #[test]
+        fn paths_never_panic(
+            coords in proptest::collection::vec(wild(), 0..16),
+            ops in proptest::collection::vec(0u8..6, 0..8),
+            spacing in prop_oneof![wild(), 0.01..1.0f64, Just(1e-300)],
+            tol in prop_oneof![wild(), 1e-3..0.1f64],
+        ) {
+            let mut path = kurbo::BezPath::new();
+            let mut it = coords.chunks_exact(2).map(|c| kurbo::Point::new(c[0], c[1])).cycle();
+            if coords.len() >= 2 {
+                // kurbo's builder asserts a leading MoveTo itself.
+                path.move_to(it.next().unwrap());
+                for op in &ops {
+                    match op {
+                        0 => path.move_to(it.next().unwrap()),
+                        1 => path.line_to(it.next().unwrap()),
+                        2 => path.quad_to(it.next().unwrap(), it.next().unwrap()),
+                        3 => path.curve_to(it.next().unwrap(), it.next().unwrap(), it.next().unwrap()),
+                        _ => path.close_path(),
+                    }
+                }
+            }
+            if let Ok(c) = sample_bez_path(&path, spacing) { prop_assert!(sampled_ok(&c)); }
+            let start = Instant::now();
+            if let Ok((out, fits)) = fit_bez_path(&path, &FitOptions::new(tol)) {
+                let path_ok = out.elements().iter().all(|e| match e {
+                    kurbo::PathEl::MoveTo(p) | kurbo::PathEl::LineTo(p) => p.is_finite(),
+                    kurbo::PathEl::QuadTo(a, b) => a.is_finite() && b.is_finite(),
+                    kurbo::PathEl::CurveTo(a, b, c) => a.is_finite() && b.is_finite() && c.is_finite(),
+                    kurbo::PathEl::ClosePath => true,
+                });
+                prop_assert!(path_ok);
+                prop_assert!(fits.iter().all(|f| curve_ok(&f.curve)));
+            }
+            prop_assert!(start.elapsed() < Duration::from_secs(10));
+            let svg = format!("M {} {} L 1 0 Q 1 1 0 1 Z", coords.first().unwrap_or(&0.0), coords.last().unwrap_or(&0.0));
+            if let Ok(c) = sample_svg_path(&svg, spacing) { prop_assert!(sampled_ok(&c)); }
+        }
+    }
+
+    #[test]
+    fn bad_path_input_is_typed() {
+        assert!(matches!(
+            sample_svg_path("M 0 0 X 3", 0.1),
+            Err(SubdivFitError::InvalidPathData { .. })
+        ));
+        assert!(matches!(
+            sample_svg_path("M 0 0 L 1e6 0", 1e-6),
+            Err(SubdivFitError::TooLarge { .. })
+        ));
+        for spacing in [0.0, -1.0, f64::NAN, f64::INFINITY] {
+            assert!(matches!(
+                sample_svg_path("M 0 0 L 1 0", spacing),
+                Err(SubdivFitError::InvalidOption {
+                    name: "spacing",
+                    ..
+                })
+            ));
+        }
+        let square = sample_svg_path("M0 0 H1 V1 H0 Z", 0.25).unwrap();
+        assert_eq!(square[0].corners, [0, 4, 8, 12]);
+        const { assert!(PATH_CORNER_ANGLE < 0.1) };
+        let c = SubdivCurve::smooth(square[0].points.clone(), Closure::Closed).unwrap();
+        assert_eq!(c.to_bez_path().unwrap().segments().count(), 16);
     }
 }
 

@@ -13,6 +13,7 @@ mod class_a;
 mod lambda_bezier;
 mod pde_bezier;
 mod subdiv_fit;
+mod subdiv_fit_glyphs;
 mod subdiv_fit_kurbo;
 pub(crate) mod subdiv_fit_scipy;
 mod suites;

@@ -60,6 +60,7 @@ pub(crate) fn tables() -> Result<Vec<Table>, DynError> {
         fit_table()?,
         scaling_table()?,
         super::subdiv_fit_kurbo::table()?,
+        super::subdiv_fit_glyphs::table()?,
     ])
 }
 

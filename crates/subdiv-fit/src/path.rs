@@ -1,0 +1,232 @@
+//! Paths in and out (feature `kurbo`): kurbo `BezPath`s and SVG path data sampled to points with
+//! their corners, fitted contour by contour, and fitted curves written as `BezPath`s of exact
+//! cubic Bézier segments.
+
+use bez_core::{BezierCurve, Vector2, bez_path_to_curves};
+use kurbo::{BezPath, Point};
+
+use crate::curvature::angle_between;
+use crate::{
+    Closure, Fit, FitOptions, MAX_FIT_POINTS, SubdivCurve, SubdivFitError, fit_with_corners,
+};
+
+/// A joint of a path where the tangent turns by more than this (radians, 1°) is a corner.
+pub const PATH_CORNER_ANGLE: f64 = std::f64::consts::PI / 180.0;
+
+/// One subpath sampled to points: its closure and the sample indices of its corners (joints
+/// between path segments where the tangent turns by more than [`PATH_CORNER_ANGLE`]; the ends of
+/// an open subpath are not listed, a fit makes them sharp anyway).
+#[derive(Debug, Clone, PartialEq)]
+#[non_exhaustive]
+pub struct SampledContour {
+    /// The samples, no two consecutive ones equal (nor the last and the first of a closed one).
+    pub points: Vec<Vector2>,
+    /// Closed when the subpath ends where it starts.
+    pub closure: Closure,
+    /// Sample indices of the corners, increasing.
+    pub corners: Vec<usize>,
+}
+
+/// Samples every subpath of `path` about every `spacing` (each segment at equal parameter steps,
+/// as many as its control polygon is long in spacings), keeping every segment's end points (so the
+/// corners are samples).
+///
+/// ```
+/// use subdiv_fit::{Closure, sample_bez_path};
+///
+/// let path = kurbo::BezPath::from_svg("M0 0 L10 0 Q10 10 0 10 Z").unwrap();
+/// let contours = sample_bez_path(&path, 0.5)?;
+/// assert_eq!(contours.len(), 1);
+/// assert_eq!(contours[0].closure, Closure::Closed);
+/// // Corners at the three joints: the line (20 samples) meets the quadratic, the quadratic
+/// // (polygon length 20, 40 samples) meets the closing line, which meets the first line.
+/// assert_eq!(contours[0].corners, [0, 20, 60]);
+/// # Ok::<(), subdiv_fit::SubdivFitError>(())
+/// ```
+///
+/// # Errors
+/// [`SubdivFitError::InvalidOption`] (`spacing`) unless `spacing` is positive and finite;
+/// [`SubdivFitError::Core`] for a non-finite path element; [`SubdivFitError::TooLarge`] when the
+/// samples would exceed [`MAX_FIT_POINTS`] (checked before sampling).
+pub fn sample_bez_path(
+    path: &BezPath,
+    spacing: f64,
+) -> Result<Vec<SampledContour>, SubdivFitError> {
+    if !(spacing.is_finite() && spacing > 0.0) {
+        return Err(SubdivFitError::InvalidOption {
+            name: "spacing",
+            value: spacing,
+            reason: "must be positive and finite",
+        });
+    }
+    let subpaths = bez_path_to_curves(path)?;
+    // Samples per segment, and their total, before any sample is made.
+    let mut total = 0.0_f64;
+    let counts: Vec<Vec<usize>> = subpaths
+        .iter()
+        .map(|sub| {
+            sub.iter()
+                .map(|c| {
+                    let len: f64 = c.points().windows(2).map(|w| (w[1] - w[0]).norm()).sum();
+                    let m = (len / spacing).ceil().max(1.0);
+                    total += m;
+                    if m.is_finite() {
+                        m as usize
+                    } else {
+                        usize::MAX
+                    }
+                })
+                .collect()
+        })
+        .collect();
+    if total.is_nan() || total > MAX_FIT_POINTS as f64 {
+        return Err(SubdivFitError::TooLarge {
+            name: "path samples",
+            requested: if total.is_finite() {
+                total as usize
+            } else {
+                usize::MAX
+            },
+            max: MAX_FIT_POINTS,
+        });
+    }
+    Ok(subpaths
+        .iter()
+        .zip(&counts)
+        .map(|(sub, counts)| sample_subpath(sub, counts))
+        .collect())
+}
+
+/// [`sample_bez_path`] on SVG path data (`M`, `L`, `H`, `V`, `Q`, `T`, `C`, `S`, `A`, `Z`, as kurbo
+/// reads it).
+///
+/// # Errors
+/// [`SubdivFitError::InvalidPathData`] when the data do not parse; otherwise as
+/// [`sample_bez_path`].
+pub fn sample_svg_path(data: &str, spacing: f64) -> Result<Vec<SampledContour>, SubdivFitError> {
+    let path = BezPath::from_svg(data).map_err(|e| SubdivFitError::InvalidPathData {
+        reason: e.to_string(),
+    })?;
+    sample_bez_path(&path, spacing)
+}
+
+fn sample_subpath(sub: &[BezierCurve<2>], counts: &[usize]) -> SampledContour {
+    let (Some(first), Some(last)) = (sub.first(), sub.last()) else {
+        return SampledContour {
+            points: Vec::new(),
+            closure: Closure::Open,
+            corners: Vec::new(),
+        };
+    };
+    let closed = first.start() == last.end() && sub.len() > 1;
+    let mut points: Vec<Vector2> = Vec::new();
+    let mut corners = Vec::new();
+    for (j, (c, &m)) in sub.iter().zip(counts).enumerate() {
+        let joint = if j > 0 {
+            Some(&sub[j - 1])
+        } else if closed {
+            Some(last)
+        } else {
+            None
+        };
+        if points.last() != Some(&c.start()) {
+            points.push(c.start());
+        }
+        if let Some(prev) = joint
+            && let (Some(a), Some(b)) = (end_tangent(prev), start_tangent(c))
+            && angle_between(&a, &b) > PATH_CORNER_ANGLE
+        {
+            corners.push(points.len() - 1);
+        }
+        for k in 1..m {
+            if let Ok(p) = c.eval(k as f64 / m as f64)
+                && points.last() != Some(&p)
+            {
+                points.push(p);
+            }
+        }
+    }
+    if closed {
+        if points.len() > 1 && points.first() == points.last() {
+            points.pop();
+        }
+    } else if points.last() != Some(&last.end()) {
+        points.push(last.end());
+    }
+    corners.dedup();
+    SampledContour {
+        points,
+        closure: Closure::from_closed(closed),
+        corners,
+    }
+}
+
+fn start_tangent(c: &BezierCurve<2>) -> Option<Vector2> {
+    let p = c.points();
+    p.iter().skip(1).find(|q| **q != p[0]).map(|q| q - p[0])
+}
+
+fn end_tangent(c: &BezierCurve<2>) -> Option<Vector2> {
+    let p = c.points();
+    let end = p[p.len() - 1];
+    p.iter().rev().skip(1).find(|q| **q != end).map(|q| end - q)
+}
+
+/// Fits every subpath of `path` ([`fit_with_corners`] on its samples about every `tolerance`,
+/// the path's corners given as known corners) and returns the fitted curves as one path of
+/// cubic Bézier segments, with the fits. Subpaths with fewer than 3 samples are left out.
+///
+/// ```
+/// use subdiv_fit::{FitOptions, fit_bez_path};
+///
+/// let circle = kurbo::Circle::new((0.0, 0.0), 1.0);
+/// let path = kurbo::Shape::to_path(&circle, 1e-9);
+/// let (fitted, fits) = fit_bez_path(&path, &FitOptions::new(1e-3))?;
+/// assert_eq!(fits.len(), 1);
+/// assert!(fits[0].curve.points().len() <= 16);
+/// assert_eq!(fitted.segments().count(), fits[0].curve.segment_count());
+/// # Ok::<(), subdiv_fit::SubdivFitError>(())
+/// ```
+///
+/// # Errors
+/// As [`sample_bez_path`] and [`fit_with_corners`].
+pub fn fit_bez_path(
+    path: &BezPath,
+    options: &FitOptions,
+) -> Result<(BezPath, Vec<Fit<2>>), SubdivFitError> {
+    let mut out = BezPath::new();
+    let mut fits = Vec::new();
+    for contour in sample_bez_path(path, options.tolerance)? {
+        if contour.points.len() < 3 {
+            continue;
+        }
+        let f = fit_with_corners(&contour.points, contour.closure, &contour.corners, options)?;
+        for el in f.curve.to_bez_path()?.elements() {
+            out.push(*el);
+        }
+        fits.push(f);
+    }
+    Ok((out, fits))
+}
+
+impl SubdivCurve<2> {
+    /// The limit curve as a kurbo path of exact cubic Bézier segments (one per polygon edge;
+    /// sharp vertices are where the tangent may jump), closed with `ClosePath` if the polygon is.
+    ///
+    /// # Errors
+    /// As [`SubdivCurve::to_beziers`].
+    pub fn to_bez_path(&self) -> Result<BezPath, SubdivFitError> {
+        let mut path = BezPath::new();
+        for (i, b) in self.to_beziers()?.iter().enumerate() {
+            let p: Vec<Point> = b.points().iter().map(|&v| v.into()).collect();
+            if i == 0 {
+                path.move_to(p[0]);
+            }
+            path.curve_to(p[1], p[2], p[3]);
+        }
+        if self.is_closed() {
+            path.close_path();
+        }
+        Ok(path)
+    }
+}

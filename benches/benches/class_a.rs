@@ -2,6 +2,7 @@
 #![allow(missing_docs, reason = "criterion macros generate undocumented items")]
 
 use std::hint::black_box;
+use std::time::Instant;
 
 use class_a::{
     TypicalPlanar, TypicalSpatial, cases, curvature_certificate, planar_nelder_mead,
@@ -76,5 +77,51 @@ fn certificates(c: &mut Criterion) {
     g.finish();
 }
 
-criterion_group!(benches, planar, spatial, certificates);
+/// Both certificates of one spatial curve (curvature and torsion).
+fn both(curve: &bez_core::BezierCurve<3>) -> bool {
+    let k = curvature_certificate(curve).is_ok_and(|c| c.is_monotone());
+    let t = torsion_certificate(curve).is_ok_and(|c| c.is_monotone());
+    k && t
+}
+
+/// The worst single case over a random set: 300 spatial typical curves of degree 3..10 (seed 7,
+/// the solver comparison's generator), each certificate pair timed (best of 3) to find the
+/// slowest curve, which criterion then measures; and the whole set, for the mean.
+fn certificate_worst_case(c: &mut Criterion) {
+    let curves: Vec<_> = cases::random_spatial_inputs(300, 7)
+        .iter()
+        .filter_map(|(a, n)| {
+            TypicalSpatial::from_points(a, *n)
+                .and_then(|t| t.curve())
+                .ok()
+        })
+        .collect();
+    let cost = |curve: &bez_core::BezierCurve<3>| {
+        (0..3)
+            .map(|_| {
+                let t0 = Instant::now();
+                black_box(both(curve));
+                t0.elapsed()
+            })
+            .min()
+            .unwrap_or_default()
+    };
+    let mut g = c.benchmark_group("class_a_certificates_random_n3_10");
+    g.sample_size(10);
+    if let Some(worst) = curves.iter().max_by_key(|c| cost(c)) {
+        g.bench_function("worst", |b| b.iter(|| both(black_box(worst))));
+    }
+    g.bench_function("all_300", |b| {
+        b.iter(|| curves.iter().filter(|c| both(black_box(c))).count());
+    });
+    g.finish();
+}
+
+criterion_group!(
+    benches,
+    planar,
+    spatial,
+    certificates,
+    certificate_worst_case
+);
 criterion_main!(benches);

@@ -9,6 +9,7 @@ use bez_core::BezierCurve;
 
 use crate::ClassAError;
 use crate::exact::{ScaledBernstein, to_common_integers};
+use crate::filter::Filtered;
 use crate::sign::{Positivity, SignProfile, locate_sign_change, positivity, sign_profile};
 
 /// Why a certificate could not decide within the subdivision caps
@@ -50,6 +51,18 @@ pub enum Monotonicity {
     },
 }
 
+/// Which arithmetic proved a certificate's verdict (both are proofs).
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
+#[non_exhaustive]
+pub enum Proof {
+    /// The floating-point filter: f64 coefficients whose signs exceed a rigorous rounding-error
+    /// bound (the common case, no big integers formed).
+    Filter,
+    /// Exact integer arithmetic (the filter could not decide).
+    Exact,
+}
+
 /// A monotonicity certificate.
 #[derive(Debug, Clone, PartialEq)]
 #[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
@@ -60,6 +73,8 @@ pub struct Certificate {
     /// The numerator's Bernstein coefficients all have one sign (convex-hull property), so no
     /// subdivision was needed.
     pub by_coefficient_signs: bool,
+    /// Which arithmetic decided.
+    pub proof: Proof,
 }
 
 impl Certificate {
@@ -185,6 +200,7 @@ fn decide(
                     interval: (lo, hi),
                 },
                 by_coefficient_signs: false,
+                proof: Proof::Exact,
             });
         }
     }
@@ -210,10 +226,48 @@ fn decide(
     Ok(Certificate {
         verdict,
         by_coefficient_signs,
+        proof: Proof::Exact,
     })
 }
 
+/// The filter's verdict as a certificate, if it decided.
+fn filtered(f: Filtered) -> Option<Certificate> {
+    let verdict = match f {
+        Filtered::Increasing => Monotonicity::Increasing,
+        Filtered::Decreasing => Monotonicity::Decreasing,
+        Filtered::Constant => Monotonicity::Constant,
+        Filtered::Declined => return None,
+    };
+    Some(Certificate {
+        verdict,
+        by_coefficient_signs: true,
+        proof: Proof::Filter,
+    })
+}
+
+/// [`curvature_certificate`] by exact arithmetic only (the filter skipped).
+pub(crate) fn curvature_certificate_exact<const D: usize>(
+    curve: &BezierCurve<D>,
+) -> Result<Certificate, ClassAError> {
+    let (num, p) = curvature_numerator(curve)?;
+    decide(&num, &p, "x' (speed)")
+}
+
+/// [`torsion_certificate`] by exact arithmetic only (the filter skipped).
+pub(crate) fn torsion_certificate_exact(
+    curve: &BezierCurve<3>,
+) -> Result<Certificate, ClassAError> {
+    let (num, g) = torsion_numerator(curve)?;
+    decide(&num, &g, "x' × x'' (curvature)")
+}
+
 /// Proven certificate of monotone curvature of a planar or spatial curve of any degree.
+///
+/// First a floating-point filter (module docs of `filter`: the same numerator in f64 with a
+/// rigorous bound on every coefficient's rounding error) decides the common case, where the
+/// regularity polynomial and the numerator have coefficients of proven sign
+/// ([`Proof::Filter`]); otherwise the exact path below decides ([`Proof::Exact`]). Both give
+/// the same verdict (tested).
 ///
 /// κ² = G/P³ with P = |x'|² and G = |x' × x''|², so d(κ²)/dt = N/P⁴ with N = G'P − 3GP'
 /// ([`curvature_numerator`]), formed exactly in integers. Regularity P > 0 on [0, 1] is proven
@@ -227,8 +281,11 @@ fn decide(
 pub fn curvature_certificate<const D: usize>(
     curve: &BezierCurve<D>,
 ) -> Result<Certificate, ClassAError> {
-    let (num, p) = curvature_numerator(curve)?;
-    decide(&num, &p, "x' (speed)")
+    crate::error::check_degree(curve.degree(), 2)?;
+    match filtered(crate::filter::curvature(curve)) {
+        Some(c) => Ok(c),
+        None => curvature_certificate_exact(curve),
+    }
 }
 
 /// Proven certificate of monotone torsion of a spatial curve of any degree.
@@ -241,6 +298,9 @@ pub fn curvature_certificate<const D: usize>(
 /// [`ClassAError::DegreeTooLow`] for n < 3, [`ClassAError::NonFinite`], and
 /// [`ClassAError::Singular`] when x' × x'' = 0 at an exact dyadic parameter.
 pub fn torsion_certificate(curve: &BezierCurve<3>) -> Result<Certificate, ClassAError> {
-    let (num, g) = torsion_numerator(curve)?;
-    decide(&num, &g, "x' × x'' (curvature)")
+    crate::error::check_degree(curve.degree(), 3)?;
+    match filtered(crate::filter::torsion(curve)) {
+        Some(c) => Ok(c),
+        None => torsion_certificate_exact(curve),
+    }
 }

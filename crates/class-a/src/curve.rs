@@ -40,6 +40,49 @@ pub fn class_a_curve<const D: usize>(
     Ok(BezierCurve::new(points)?)
 }
 
+/// The control points of eq. (8) built from both ends, into `out`: b₀ … b_⌊n/2⌋ forward from
+/// b₀ with legs Mʲ Δb₀, then bₙ = b₀ + Σ_{j<n} Mʲ Δb₀ (the legs summed relative to b₀) and
+/// bₙ₋₁ … b_⌊n/2⌋₊₁ backward from it with the last leg `last_leg` = Mⁿ⁻¹ Δb₀ given directly
+/// and legs Δbⱼ = M⁻¹ Δbⱼ₊₁.
+///
+/// In real arithmetic this is [`class_a_curve`]. In f64 the end leg bₙ − bₙ₋₁ is then off by
+/// one rounding of bₙ₋₁ instead of the rounding accumulated over n additions, so the end tangent
+/// is met to about ε|bₙ| / |Δbₙ₋₁| at any degree; the mismatch of the two halves (a few ulps of
+/// the points) goes into the middle leg.
+pub(crate) fn two_ended_points<const D: usize>(
+    b0: &Vector<D>,
+    first_leg: &Vector<D>,
+    last_leg: &Vector<D>,
+    m: &Matrix<D>,
+    m_inv: &Matrix<D>,
+    degree: usize,
+    out: &mut Vec<Vector<D>>,
+) {
+    out.clear();
+    let half = degree / 2;
+    let mut p = *b0;
+    let mut leg = *first_leg;
+    let mut total = Vector::<D>::zeros();
+    out.push(p);
+    for j in 0..degree {
+        if j < half {
+            p += leg;
+            out.push(p);
+        }
+        total += leg;
+        leg = *m * leg;
+    }
+    let start = out.len();
+    out.resize(degree + 1, *b0);
+    let mut p = b0 + total;
+    let mut leg = *last_leg;
+    for j in (start..=degree).rev() {
+        out[j] = p;
+        p -= leg;
+        leg = *m_inv * leg;
+    }
+}
+
 /// A Bézier curve of eq. (2) together with its matrix: legs Δbⱼ = Mʲ Δb₀, j = 0..n−1.
 ///
 /// The value type of a Class A curve in this crate: the control points are computed once, at

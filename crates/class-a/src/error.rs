@@ -127,6 +127,15 @@ pub enum ClassAError {
         /// The rotation angle θ of the best candidate.
         theta: f64,
     },
+    /// [`crate::SpatialRequirement::MonotoneTorsion`]: none of the Class A spatial solutions
+    /// found has proven monotone torsion.
+    #[error(
+        "no spatial curve with proven monotone torsion among {class_a} Class A solution(s) found"
+    )]
+    NoMonotoneTorsion {
+        /// The Class A solutions found.
+        class_a: usize,
+    },
     /// The rounded control points do not meet an end condition to the tolerance (e.g. the last
     /// leg L·sⁿ⁻¹ is below the rounding of the end point, so its direction is not representable).
     #[error(

@@ -32,6 +32,7 @@ mod certificate;
 mod curve;
 mod error;
 mod exact;
+mod filter;
 mod general;
 mod interpolation;
 mod lcg;
@@ -46,7 +47,7 @@ mod square;
 pub mod cases;
 
 pub use crate::certificate::{
-    Certificate, Monotonicity, UndecidedCause, curvature_certificate, curvature_numerator,
+    Certificate, Monotonicity, Proof, UndecidedCause, curvature_certificate, curvature_numerator,
     torsion_certificate, torsion_numerator,
 };
 pub use crate::curve::{ClassACurve, class_a_curve};
@@ -65,7 +66,7 @@ pub use crate::planar::{
     PlanarFeasibility, PlanarGeometry, TypicalPlanar, planar_feasibility, solve_scale,
 };
 pub use crate::sign::{MAX_PIECES, MAX_SUBDIVISION_DEPTH};
-pub use crate::spatial::{TypicalSpatial, rotation};
+pub use crate::spatial::{SpatialRequirement, TypicalSpatial, rotation};
 pub use crate::spiral::{apollonius_pole, log_spiral_pole, spiral_deviation};
 pub use crate::square::{Matrix, Matrix2, Matrix3};
 #[cfg(feature = "paper")]

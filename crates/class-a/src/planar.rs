@@ -5,10 +5,9 @@ use num_complex::Complex;
 
 use crate::square::Matrix2;
 
-#[cfg(doc)]
 use crate::INTERPOLATION_TOLERANCE;
 use crate::matrix::{typical_matrix2, typical_planar_margin};
-use crate::{ClassAError, Interpolation, class_a_curve};
+use crate::{ClassAError, Interpolation};
 
 /// A typical planar Class A curve: b₀, first leg L·μ, and M = s·R(θ) (eq. (5)).
 ///
@@ -341,10 +340,32 @@ impl TypicalPlanar {
     /// along α₁ − α₀ and α₂ − α₁ (eqs. (5)–(8)): θ = ψ/(n − 1), s from [`solve_scale`],
     /// L = |α₂ − α₀| / |Σ zʲ| with z = s e^{iθ}.
     ///
+    /// The result is verified before it is returned: its control points
+    /// ([`TypicalPlanar::control_points_into`]) have non-zero end legs and meet the end points
+    /// and tangent directions to [`INTERPOLATION_TOLERANCE`] ([`Interpolation`]); a curve that
+    /// does not is an error, not an `Ok`.
+    ///
     /// # Errors
-    /// As [`planar_feasibility`], and [`ClassAError::NotClassA`] when s violates condition (4)
-    /// (cos θ < s < 1/cos θ; an isosceles triangle gives s = 1).
+    /// As [`planar_feasibility`]; [`ClassAError::NotClassA`] when s violates condition (4)
+    /// (cos θ < s < 1/cos θ; an isosceles triangle gives s = 1); [`ClassAError::ToleranceNotMet`]
+    /// when the rounded control points miss an end condition, e.g. a last leg L·sⁿ⁻¹ below the
+    /// rounding of α₂ (s ≪ 1 at high degree; a zero leg counts as a tangent error of π).
     pub fn from_points(
+        a0: &Vector2,
+        a1: &Vector2,
+        a2: &Vector2,
+        degree: usize,
+    ) -> Result<Self, ClassAError> {
+        let t = Self::unverified(a0, a1, a2, degree)?;
+        let mut points = Vec::with_capacity(degree + 1);
+        t.control_points_into(&mut points);
+        Interpolation::measure(&points, a0, &(a1 - a0), &(a2 - a1), a2)
+            .within(INTERPOLATION_TOLERANCE)?;
+        Ok(t)
+    }
+
+    /// The solved parameters without the interpolation check.
+    fn unverified(
         a0: &Vector2,
         a1: &Vector2,
         a2: &Vector2,
@@ -403,7 +424,7 @@ impl TypicalPlanar {
         degree: usize,
         tolerance: f64,
     ) -> Result<(Self, BezierCurve<2>, Interpolation), ClassAError> {
-        let t = Self::from_points(a0, a1, a2, degree)?;
+        let t = Self::unverified(a0, a1, a2, degree)?;
         let c = t.curve()?;
         let e =
             Interpolation::measure(c.points(), a0, &(a1 - a0), &(a2 - a1), a2).within(tolerance)?;
@@ -416,32 +437,37 @@ impl TypicalPlanar {
         typical_matrix2(self.s, self.theta)
     }
 
-    /// The Bézier curve (eq. (8)).
+    /// The Bézier curve (eq. (8)), its control points built from both ends
+    /// ([`TypicalPlanar::control_points_into`]).
     ///
     /// # Errors
     /// [`ClassAError::Core`] if the control points overflow.
     pub fn curve(&self) -> Result<BezierCurve<2>, ClassAError> {
-        class_a_curve(
-            &self.b0,
-            &(self.mu * self.length),
-            &self.matrix(),
-            self.degree,
-        )
+        let mut points = Vec::with_capacity(self.degree + 1);
+        self.control_points_into(&mut points);
+        Ok(BezierCurve::new(points)?)
     }
 
-    /// Control points written in place (no allocation beyond `out`), for interactive updates.
+    /// Control points written in place (no allocation beyond `out`), for interactive updates:
+    /// b₀ … b_⌊n/2⌋ forward from b₀, the rest backward from bₙ = b₀ + L μ Σ zʲ with the last
+    /// leg L sⁿ⁻¹ R((n − 1)θ) μ computed directly, so the end tangent carries one rounding of
+    /// bₙ₋₁ rather than n (in real arithmetic, eq. (8)).
     pub fn control_points_into(&self, out: &mut Vec<Vector2>) {
-        out.clear();
-        let (sn, c) = self.theta.sin_cos();
-        let (zr, zi) = (self.s * c, self.s * sn);
-        let mut p = self.b0;
-        let mut leg = self.mu * self.length;
-        out.push(p);
-        for _ in 0..self.degree {
-            p += leg;
-            out.push(p);
-            leg = Vector2::new(zr * leg.x() - zi * leg.y(), zi * leg.x() + zr * leg.y());
-        }
+        let n = self.degree;
+        let turn = (n - 1) as f64;
+        let magnitude = (self.length.ln() + turn * self.s.ln()).exp();
+        let (sn, cs) = (self.theta * turn).sin_cos();
+        let mu = self.mu;
+        let last = Vector2::new(cs * mu.x() - sn * mu.y(), sn * mu.x() + cs * mu.y()) * magnitude;
+        crate::curve::two_ended_points(
+            &self.b0,
+            &(self.mu * self.length),
+            &last,
+            &self.matrix(),
+            &typical_matrix2(1.0 / self.s, -self.theta),
+            n,
+            out,
+        );
     }
 
     /// Margin of condition (4) (≥ 0: monotone curvature, exactly).

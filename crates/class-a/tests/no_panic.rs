@@ -11,12 +11,13 @@ use bez_core::{BezierCurve, BezierForm, Vector2, Vector3};
 use class_a::{
     Certificate, ClassACurve, ClassAError, ClassAReport, Condition, INTERPOLATION_TOLERANCE,
     Interpolation, LogGraph, MAX_PIECES, MAX_SUBDIVISION_DEPTH, Matrix, Matrix2, Matrix3,
-    Monotonicity, PlanarFeasibility, PlanarGeometry, SUBCURVE_SAMPLES, ScaledBernstein,
-    TypicalPlanar, TypicalSpatial, UndecidedCause, apollonius_pole, class_a_curve,
-    curvature_certificate, curvature_numerator, curvature_samples, curvature_with_derivative,
-    log_graph, log_graph_from_points, log_spiral_pole, perturb2, perturb3, planar_feasibility,
-    rotation, solve_scale, spiral_deviation, torsion_certificate, torsion_numerator,
-    torsion_samples, torsion_with_derivative, typical_matrix2, typical_planar_margin,
+    Monotonicity, PlanarFeasibility, PlanarGeometry, Proof, SUBCURVE_SAMPLES, ScaledBernstein,
+    SpatialRequirement, TypicalPlanar, TypicalSpatial, UndecidedCause, apollonius_pole,
+    class_a_curve, curvature_certificate, curvature_numerator, curvature_samples,
+    curvature_with_derivative, log_graph, log_graph_from_points, log_spiral_pole, perturb2,
+    perturb3, planar_feasibility, rotation, solve_scale, spiral_deviation, torsion_certificate,
+    torsion_numerator, torsion_samples, torsion_with_derivative, typical_matrix2,
+    typical_planar_margin,
 };
 use proptest::prelude::*;
 
@@ -109,6 +110,12 @@ proptest! {
             }
         }
         let _ = TypicalSpatial::candidates(&a, n);
+        for requirement in [SpatialRequirement::ClassA, SpatialRequirement::MonotoneTorsion] {
+            if let Ok(ts) = TypicalSpatial::solve(&a, n.min(12), requirement) {
+                prop_assert!(ts.s.is_finite() && ts.theta.is_finite() && ts.length.is_finite());
+                let _ = ts.torsion_condition();
+            }
+        }
         let m = rotation(&a[0], th) * s;
         if let Ok(c) = class_a_curve(&a[1], &a[2], &m, n) {
             prop_assert!(finite_curve(&c));
@@ -155,6 +162,7 @@ proptest! {
                 prop_assert!(tau.is_finite() && dtau.is_finite());
             }
             if let Ok(cert) = torsion_certificate(&c) {
+                let _: Proof = cert.proof;
                 let verdict: Monotonicity = cert.verdict;
                 if let Monotonicity::Undecided { cause, .. } = verdict {
                     prop_assert!(matches!(cause, UndecidedCause::Regularity | UndecidedCause::Sign));

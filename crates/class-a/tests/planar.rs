@@ -181,6 +181,17 @@ mod arbitrary_triangles {
                     prop_assert!(((p[n] - p[n - 1]).normalize() - (a2 - a1).normalize()).norm() <= tol);
                 }
                 Err(ClassAError::NotClassA { .. }) => prop_assert!(!f.unwrap().is_feasible()),
+                // Verified before `Ok`: a feasible curve whose rounded end leg misses the tangent
+                // (the representation limit ε|bₙ| / |Δbₙ₋₁|, see `generate`) is an error.
+                Err(ClassAError::ToleranceNotMet { condition, achieved, .. }) => {
+                    prop_assert!(f.unwrap().is_feasible());
+                    let (c, curve, e) =
+                        TypicalPlanar::generate(&a0, &a1, &a2, n, f64::INFINITY).unwrap();
+                    prop_assert_eq!(e.worst(), (condition, achieved));
+                    let p = curve.points();
+                    let last_leg = c.length() * c.s().powi(n as i32 - 1);
+                    prop_assert!(achieved <= 4.0 * f64::EPSILON * p[n].norm() / last_leg + 1e-9);
+                }
                 Err(e) => prop_assert!(false, "unexpected {e}"),
             }
         }
@@ -210,7 +221,11 @@ fn tight_turn_at_high_degree_is_a_typed_error() {
     // below the rounding of b₄₉, so the end tangent is not representable to 1e-9.
     let (a0, a1) = (Vector2::new(0.0, 0.0), Vector2::new(1.0, 0.0));
     let a2 = a1 + Vector2::new(1.0f64.cos(), 1.0f64.sin()) * 0.01;
-    let t = TypicalPlanar::from_points(&a0, &a1, &a2, 49).unwrap();
+    assert!(matches!(
+        TypicalPlanar::from_points(&a0, &a1, &a2, 49),
+        Err(ClassAError::ToleranceNotMet { .. })
+    ));
+    let (t, _, _) = TypicalPlanar::generate(&a0, &a1, &a2, 49, f64::INFINITY).unwrap();
     assert!(t.s() < 0.6, "s = {}", t.s());
     match TypicalPlanar::generate(&a0, &a1, &a2, 49, INTERPOLATION_TOLERANCE) {
         Err(ClassAError::ToleranceNotMet {

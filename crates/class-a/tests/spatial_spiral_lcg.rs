@@ -212,9 +212,14 @@ fn unreachable_chord_is_reported() {
         Vector3::new(-5.0, 1.0, 0.0),
         Vector3::new(-10.0, 0.0, 0.0),
     ];
-    let e = TypicalSpatial::from_points(&a, 5).unwrap_err();
+    // A quadratic's chord lies between its end tangents: unreachable at n = 2.
+    let e = TypicalSpatial::from_points(&a, 2).unwrap_err();
     assert!(matches!(e, ClassAError::ChordUnreachable { residual } if residual > 0.1));
     assert!(e.to_string().contains("chord direction"));
+    // At n = 5 a Class A curve reaches it by turning its tangent by more than π (branch k ≠ 0).
+    let t = TypicalSpatial::from_points(&a, 5).unwrap();
+    assert!(4.0 * t.theta.abs() > std::f64::consts::PI && t.class_a_margin() >= 0.0);
+    check(&a, &t);
 }
 
 #[test]

@@ -1,7 +1,7 @@
 //! `Flattener`: one entry point for every flattening method, with an absolute tolerance, the
 //! points streamed to a sink, and paths of several curves in one call.
 
-use bez_core::{BezierForm, Vector2};
+use bez_core::{BezierCurve, BezierForm, Vector2};
 
 use crate::error::SubdivError;
 use crate::flatten::{DEFAULT_MAX_DEPTH, FlattenOptions, curve_size, flatten};
@@ -139,8 +139,30 @@ impl Flattener {
         curve: &C,
         mut sink: impl FnMut(FlatPoint),
     ) -> Result<usize, SubdivError> {
-        let (tol, depth) = (self.tolerance, self.max_depth);
         let bezier = curve.as_bezier();
+        if let Some(exponent) = unit_exponent(bezier) {
+            // Far from unit size, flatten the curve scaled by 2^−exponent (exact) with the
+            // tolerance scaled alike, and scale the points back: the result is the scaled
+            // result, and no intermediate (|B′|³, squared lengths) leaves the f64 range.
+            let down = 2f64.powi(-exponent);
+            let up = 2f64.powi(exponent);
+            let scaled = BezierCurve::new(bezier.points().iter().map(|&p| p * down).collect())?;
+            let tolerance = (self.tolerance * down).min(f64::MAX);
+            return Self { tolerance, ..*self }.flatten_unit(&scaled, |mut p| {
+                p.point = p.point * up;
+                sink(p);
+            });
+        }
+        self.flatten_unit(bezier, sink)
+    }
+
+    /// [`Self::flatten`] of a curve whose size is within 2^±[`UNIT_EXPONENT_RANGE`].
+    fn flatten_unit(
+        &self,
+        bezier: &BezierCurve<2>,
+        mut sink: impl FnMut(FlatPoint),
+    ) -> Result<usize, SubdivError> {
+        let (tol, depth) = (self.tolerance, self.max_depth);
         match self.method {
             Method::Fast => flatten_wang(bezier, tol, sink),
             Method::LocalWang => stream_local_wang(bezier, tol, depth, sink),
@@ -270,6 +292,31 @@ fn paper_rule_points<C: BezierForm<2> + ?Sized>(
         });
     }
     Ok(out)
+}
+
+/// Curves whose largest coordinate lies within 2^±`UNIT_EXPONENT_RANGE` are flattened as they
+/// are; others are first scaled by a power of two (see [`Flattener::flatten`]).
+const UNIT_EXPONENT_RANGE: i32 = 128;
+
+/// The power of two to divide `bezier` by before flattening, when its largest coordinate is
+/// outside 2^±[`UNIT_EXPONENT_RANGE`] (`None` inside, and for a curve at the origin).
+fn unit_exponent(bezier: &BezierCurve<2>) -> Option<i32> {
+    let size = bezier
+        .points()
+        .iter()
+        .map(Vector2::amax)
+        .fold(0.0, f64::max);
+    if size == 0.0 || !size.is_finite() {
+        return None;
+    }
+    let exponent = size.log2().round();
+    // |exponent| ≤ 1075 for every positive finite f64, so the cast is exact.
+    #[allow(
+        clippy::cast_possible_truncation,
+        reason = "a finite f64's binary exponent"
+    )]
+    let exponent = exponent as i32;
+    (exponent.abs() > UNIT_EXPONENT_RANGE).then_some(exponent)
 }
 
 #[cfg(test)]

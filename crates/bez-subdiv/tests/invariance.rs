@@ -55,8 +55,9 @@ fn moved(curve: &BezierCurve<2>, f: impl Fn(Vector2) -> Vector2) -> BezierCurve<
 proptest! {
     #![proptest_config(ProptestConfig::with_cases(48))]
 
-    /// Scaling by a power of two is exact, so every method returns exactly the scaled
-    /// polyline: the same count, every point scaled.
+    /// Scaling by a power of two is exact, so every method returns the scaled polyline: the
+    /// same count, the same parameters up to rounding, every point scaled. (`Flattener`
+    /// rescales curves far from unit size by a power of two first.)
     #[test]
     fn scaling_by_powers_of_two_scales_the_polyline(
         curve in bez_core::proptest_support::curve::<2>(1..=7, 10.0),
@@ -70,7 +71,7 @@ proptest! {
             let b = polyline(&scaled, tolerance * s, method);
             prop_assert_eq!(a.len(), b.len(), "{:?} at 2^{}", method, exponent);
             for ((t, p), (u, q)) in a.iter().zip(&b) {
-                prop_assert_eq!(t, u, "{:?} at 2^{}", method, exponent);
+                prop_assert!((t - u).abs() <= 1e-12, "{:?} at 2^{}: t = {} vs {}", method, exponent, t, u);
                 prop_assert!((*p * s - *q).norm() <= 1e-12 * s * 10.0, "{:?}: {:?} vs {:?}", method, p, q);
             }
         }

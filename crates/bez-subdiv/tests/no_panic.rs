@@ -258,3 +258,23 @@ fn every_public_item_is_in_this_suite() {
     );
     assert!(missing.is_empty(), "not covered by this suite: {missing:?}");
 }
+
+/// Every public function and method of the crate is called above (a new one fails here until
+/// it joins this suite).
+#[test]
+fn every_public_function_is_called_in_this_suite() {
+    let sources = bez_core::proptest_support::crate_sources(env!("CARGO_MANIFEST_DIR"));
+    let sources: Vec<(&str, &str)> = sources
+        .iter()
+        .map(|(f, t)| (f.as_str(), t.as_str()))
+        .collect();
+    let uncalled = bez_core::proptest_support::uncalled_in_suite(
+        include_str!("../src/lib.rs"),
+        &sources,
+        include_str!("no_panic.rs"),
+    );
+    assert!(
+        uncalled.is_empty(),
+        "not called by this suite: {uncalled:?}"
+    );
+}

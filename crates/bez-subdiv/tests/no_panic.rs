@@ -259,8 +259,29 @@ fn every_public_item_is_in_this_suite() {
     assert!(missing.is_empty(), "not covered by this suite: {missing:?}");
 }
 
+/// kurbo paths with wild coordinates and tolerances: points or an error, never a panic, and
+/// every point finite.
+#[cfg(feature = "kurbo")]
+#[test]
+fn kurbo_paths_never_panic() {
+    use kurbo::{BezPath, Point};
+    for x in [f64::NAN, f64::INFINITY, 1e300, 1e152, 0.5, -0.0] {
+        for tolerance in [f64::NAN, 0.0, -1.0, 1e-300, 1e-3, 1e308] {
+            let mut path = BezPath::new();
+            path.move_to(Point::new(0.0, 0.0));
+            path.curve_to(Point::new(x, 1.0), Point::new(2.0, x), Point::new(3.0, 0.0));
+            path.close_path();
+            let _ = Flattener::new(tolerance).flatten_bez_path(&path, |_, p| {
+                assert!(p.point.is_finite() && p.t.is_finite());
+            });
+        }
+    }
+}
+
 /// Every public function and method of the crate is called above (a new one fails here until
-/// it joins this suite).
+/// it joins this suite), but for the builders of the reproduction-only `FlattenOptions` and
+/// `split_objective`, which only the `paper` feature exports:
+// paper-only: with_tolerance, with_rule, split_objective
 #[test]
 fn every_public_function_is_called_in_this_suite() {
     let sources = bez_core::proptest_support::crate_sources(env!("CARGO_MANIFEST_DIR"));

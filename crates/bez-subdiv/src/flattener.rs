@@ -149,7 +149,7 @@ impl Flattener {
             let scaled = BezierCurve::new(bezier.points().iter().map(|&p| p * down).collect())?;
             let tolerance = (self.tolerance * down).min(f64::MAX);
             return Self { tolerance, ..*self }.flatten_unit(&scaled, |mut p| {
-                p.point = p.point * up;
+                p.point *= up;
                 sink(p);
             });
         }

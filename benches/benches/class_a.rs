@@ -5,8 +5,8 @@ use std::hint::black_box;
 use std::time::Instant;
 
 use class_a::{
-    TypicalPlanar, TypicalSpatial, cases, curvature_certificate, planar_nelder_mead,
-    torsion_certificate,
+    TypicalPlanar, TypicalSpatial, cases, curvature_certificate, curvature_samples, log_graph,
+    planar_nelder_mead, torsion_certificate, torsion_samples,
 };
 use criterion::{BenchmarkId, Criterion, criterion_group, criterion_main};
 
@@ -117,8 +117,125 @@ fn certificate_worst_case(c: &mut Criterion) {
     g.finish();
 }
 
+/// A recorded drag: 1,000 steps of the end point α₃ (spatial) or α₂ (planar) on a seeded random
+/// walk of 0.5 % of the chord per step from the Fig. 8 / Fig. 6 points. Each frame: the curve
+/// (spatial: continued from the last frame by `TypicalSpatial::update`), its certificate
+/// (torsion certificate; planar: the exact condition (4) margin) and the LTG / LCG slope of
+/// 17 samples. The whole replay (time / 1000 is the mean frame) and its slowest frame.
+fn drag(c: &mut Criterion) {
+    let mut seed = 2014u64;
+    let mut step = move || {
+        seed = seed
+            .wrapping_mul(6_364_136_223_846_793_005)
+            .wrapping_add(1_442_695_040_888_963_407);
+        ((seed >> 11) as f64 / (1u64 << 53) as f64) * 2.0 - 1.0
+    };
+    let a = cases::fig8_points();
+    let scale = (a[3] - a[0]).norm() * 0.005;
+    let mut spatial = vec![a];
+    for _ in 0..1000 {
+        let mut next = spatial[spatial.len() - 1];
+        next[3] += bez_core::Vector3::new(step(), step(), step()) * scale;
+        spatial.push(next);
+    }
+    let a = cases::fig6_points();
+    let scale = (a[2] - a[0]).norm() * 0.005;
+    let mut planar = vec![a];
+    for _ in 0..1000 {
+        let mut next = planar[planar.len() - 1];
+        next[2] += bez_core::Vector2::new(step(), step()) * scale;
+        planar.push(next);
+    }
+    let spatial_frame = |last: &TypicalSpatial, a: &[bez_core::Vector3; 4]| {
+        let t = last.update(a).unwrap_or(*last);
+        let certified = t
+            .curve()
+            .ok()
+            .and_then(|c| torsion_certificate(&c).ok().map(|k| k.is_monotone()))
+            .unwrap_or(false);
+        let slope = t
+            .curve()
+            .ok()
+            .and_then(|c| torsion_samples(&c, 17).ok())
+            .and_then(|s| log_graph(&s).ok())
+            .map(|g| g.slope);
+        (t, certified, slope)
+    };
+    let planar_frame = |a: &[bez_core::Vector2; 3]| {
+        TypicalPlanar::from_points(&a[0], &a[1], &a[2], 49)
+            .ok()
+            .map(|t| {
+                let slope = t
+                    .curve()
+                    .ok()
+                    .and_then(|c| curvature_samples(&c, 17).ok())
+                    .and_then(|s| log_graph(&s).ok())
+                    .map(|g| g.slope);
+                (t.margin() >= 0.0, slope)
+            })
+    };
+    let Ok(start) = TypicalSpatial::from_points(&spatial[0], 7) else {
+        return;
+    };
+    let mut g = c.benchmark_group("class_a_drag_1000");
+    g.sample_size(10);
+    g.bench_function("spatial_n7", |b| {
+        b.iter(|| {
+            let mut t = start;
+            for a in &spatial[1..] {
+                t = spatial_frame(&t, black_box(a)).0;
+            }
+            t
+        });
+    });
+    g.bench_function("planar_n49", |b| {
+        b.iter(|| {
+            planar
+                .iter()
+                .filter_map(|a| planar_frame(black_box(a)))
+                .count()
+        });
+    });
+    // The slowest frame of each replay (best of 3 timings per frame), measured alone.
+    let mut states = vec![start];
+    for a in &spatial[1..] {
+        let last = states[states.len() - 1];
+        states.push(spatial_frame(&last, a).0);
+    }
+    let time = |f: &dyn Fn()| {
+        (0..3)
+            .map(|_| {
+                let t0 = Instant::now();
+                f();
+                t0.elapsed()
+            })
+            .min()
+            .unwrap_or_default()
+    };
+    if let Some(k) = (1..spatial.len()).max_by_key(|&k| {
+        time(&|| {
+            black_box(spatial_frame(&states[k - 1], &spatial[k]));
+        })
+    }) {
+        g.bench_function("spatial_n7_worst_frame", |b| {
+            b.iter(|| spatial_frame(&states[k - 1], black_box(&spatial[k])));
+        });
+    }
+    if let Some(k) = (0..planar.len()).max_by_key(|&k| {
+        time(&|| {
+            black_box(planar_frame(&planar[k]));
+        })
+    }) {
+        g.bench_function("planar_n49_worst_frame", |b| {
+            b.iter(|| planar_frame(black_box(&planar[k])));
+        });
+    }
+    g.finish();
+}
+
 criterion_group!(
     benches,
+    drag,
     planar,
     spatial,
     certificates,

@@ -430,6 +430,57 @@ impl TypicalSpatial {
         }
     }
 
+    /// The solution for moved points α₀..α₃ continued from `self` (an interactive drag): damped
+    /// Newton from `self`'s (φ, log s) on its branch k, without the grid; if it does not converge
+    /// to a Class A curve that passes the checks of [`TypicalSpatial::solve`], the full
+    /// [`TypicalSpatial::from_points`] is run. Following the branch keeps the curve continuous
+    /// during a drag (it need not be the least-turning solution `from_points` would pick).
+    ///
+    /// ```
+    /// use bez_core::Vector3;
+    /// use class_a::TypicalSpatial;
+    /// let mut a = [
+    ///     Vector3::new(0.0, 0.0, 0.0),
+    ///     Vector3::new(1.0, 0.0, 0.2),
+    ///     Vector3::new(6.21, 6.54, 1.79),
+    ///     Vector3::new(6.12, 9.44, 2.73),
+    /// ];
+    /// let mut t = TypicalSpatial::from_points(&a, 7)?;
+    /// for _ in 0..10 {
+    ///     a[3] += Vector3::new(0.02, 0.01, 0.0);
+    ///     t = t.update(&a)?;
+    /// }
+    /// assert!(t.class_a_margin() >= 0.0);
+    /// # Ok::<(), class_a::ClassAError>(())
+    /// ```
+    ///
+    /// # Errors
+    /// As [`TypicalSpatial::from_points`].
+    pub fn update(&self, a: &[Vector3; 4]) -> Result<Self, ClassAError> {
+        let setup = Setup::new(a, self.degree)?;
+        let psi = setup.branch(self.phi, 0).theta * (self.degree - 1) as f64;
+        let turns = ((self.theta * (self.degree - 1) as f64 - psi) / TAU).round();
+        let (phi, ls, r) = newton(&setup, self.phi, self.s.ln(), turns as i64);
+        if r <= CONVERGED {
+            let t = setup.finish(&a[0], phi, ls, turns as i64)?;
+            if t.class_a_margin() >= 0.0 {
+                let curve = t.curve()?;
+                let met = Interpolation::measure(
+                    curve.points(),
+                    &a[0],
+                    &(a[1] - a[0]),
+                    &(a[3] - a[2]),
+                    &a[3],
+                )
+                .within(INTERPOLATION_TOLERANCE);
+                if met.is_ok() {
+                    return Ok(t);
+                }
+            }
+        }
+        Self::from_points(a, self.degree)
+    }
+
     /// The sufficient condition for monotone torsion, cos θ ≥ (1 + σ)/(2σ) with σ = max(s, 1/s)
     /// (tested against the exact [`crate::torsion_certificate`] on thousands of random typical
     /// curves of degree 3..10 with s ∈ [0.3, 3], no exception; about 60 % of the curves that

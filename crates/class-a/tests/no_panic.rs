@@ -114,6 +114,9 @@ proptest! {
             if let Ok(ts) = TypicalSpatial::solve(&a, n.min(12), requirement) {
                 prop_assert!(ts.s.is_finite() && ts.theta.is_finite() && ts.length.is_finite());
                 let _ = ts.torsion_condition();
+                if let Ok(next) = ts.update(&a) {
+                    prop_assert!(next.s.is_finite() && next.theta.is_finite());
+                }
             }
         }
         let m = rotation(&a[0], th) * s;

@@ -120,3 +120,36 @@ fn a_total_turn_of_three_half_turns_is_solved() {
     let t = TypicalSpatial::from_points(&[p[0], p[1], p[11], p[12]], 12).unwrap();
     assert!((t.axis * t.theta - axis * 0.35).norm() < 1e-10 && (t.s - 1.25).abs() < 1e-10);
 }
+
+#[test]
+fn a_drag_is_followed_by_continuation() {
+    let mut rng = Rng(4);
+    let axis = Vector3::new(0.3, -0.2, 1.0).normalize();
+    let m = rotation(&axis, 0.3) * 1.2;
+    let c = class_a_curve(&Vector3::zeros(), &Vector3::new(1.0, 0.1, 0.2), &m, 9).unwrap();
+    let p = c.points();
+    let mut a = [p[0], p[1], p[8], p[9]];
+    let mut t = TypicalSpatial::from_points(&a, 9).unwrap();
+    let scale = (a[3] - a[0]).norm();
+    for _ in 0..100 {
+        let step = Vector3::new(
+            rng.range(-1.0, 1.0),
+            rng.range(-1.0, 1.0),
+            rng.range(-1.0, 1.0),
+        );
+        a[3] += step * (0.01 * scale);
+        let next = t.update(&a).unwrap();
+        // The continued solution is one of the full search's, Class A, and close to the last.
+        let all = TypicalSpatial::candidates(&a, 9).unwrap();
+        assert!(all.iter().any(|c| {
+            (c.axis * c.theta - next.axis * next.theta).norm() <= 1e-8
+                && (c.s / next.s - 1.0).abs() <= 1e-8
+        }));
+        assert!(next.class_a_margin() >= 0.0);
+        assert!((next.axis * next.theta - t.axis * t.theta).norm() < 0.1);
+        let curve = next.curve().unwrap();
+        let pts = curve.points();
+        assert!((pts[9] - a[3]).norm() <= 1e-9 * scale);
+        t = next;
+    }
+}

@@ -1,5 +1,5 @@
-//! subdiv-fit: exact evaluation, fitting of the test shapes, growth with the number of points,
-//! and kurbo's curve simplification on the same polylines.
+//! subdiv-fit: exact evaluation, fitting of the test shapes, growth with the number of points, a
+//! noisy 100,000-point circle, and kurbo's curve simplification on the same polylines.
 #![allow(missing_docs, reason = "criterion macros generate undocumented items")]
 
 use std::hint::black_box;
@@ -8,7 +8,7 @@ use criterion::{BenchmarkId, Criterion, criterion_group, criterion_main};
 use kurbo::simplify::{SimplifyOptions, simplify_bezpath};
 use kurbo::{BezPath, Point};
 use subdiv_fit::cases::{closed_petals, open_wave};
-use subdiv_fit::{FitOptions, SubdivCurve, Vector2, fit};
+use subdiv_fit::{FitMode, FitOptions, SubdivCurve, Vector2, fit};
 
 fn eval(c: &mut Criterion) {
     let data = closed_petals(1);
@@ -57,6 +57,34 @@ fn fitting(c: &mut Criterion) {
     g.finish();
 }
 
+/// 100,000 points of the unit circle with uniform radial noise of ±2.5e-4 (a deterministic
+/// generator), fitted at tolerance 1e-3: the least-squares mode's banded solve and the
+/// scale-aware initial points on dense noisy data.
+fn noisy_circle(c: &mut Criterion) {
+    let n = 100_000;
+    let mut state: u64 = 7;
+    let data: Vec<Vector2> = (0..n)
+        .map(|k| {
+            state = state
+                .wrapping_mul(6_364_136_223_846_793_005)
+                .wrapping_add(1_442_695_040_888_963_407);
+            let noise = 2.0 * ((state >> 11) as f64 / (1u64 << 53) as f64) - 1.0;
+            let t = std::f64::consts::TAU * k as f64 / n as f64;
+            let r = 1.0 + 2.5e-4 * noise;
+            Vector2::new(r * t.cos(), r * t.sin())
+        })
+        .collect();
+    let mut g = c.benchmark_group("subdiv_fit_noisy_circle_100k");
+    g.sample_size(10);
+    for mode in [FitMode::Interpolate, FitMode::LeastSquares] {
+        let opts = FitOptions::new(1e-3).with_mode(mode);
+        g.bench_function(format!("{mode:?}"), |b| {
+            b.iter(|| fit(black_box(&data), subdiv_fit::Closure::Closed, &opts));
+        });
+    }
+    g.finish();
+}
+
 fn polyline(data: &[Vector2], closed: bool) -> BezPath {
     let mut p = BezPath::new();
     for (i, v) in data.iter().enumerate() {
@@ -84,5 +112,5 @@ fn kurbo_simplify(c: &mut Criterion) {
     g.finish();
 }
 
-criterion_group!(benches, eval, fitting, kurbo_simplify);
+criterion_group!(benches, eval, fitting, noisy_circle, kurbo_simplify);
 criterion_main!(benches);

@@ -212,3 +212,25 @@ fn point_removal_keeps_the_tolerance() {
         }
     }
 }
+
+/// The corners of the outline keep their angle within 1° in the interpolation mode (the turn of
+/// the control polygon at a sharp vertex is the turn of the limit curve there): the exact turns
+/// are 120° (concave arc to first edge), 90° and 30°.
+#[test]
+fn kept_corners_keep_their_angle() {
+    let (data, corners) = outline(4000);
+    let f = fit(&data, Closure::Closed, &FitOptions::new(1e-3)).unwrap();
+    let (k, p) = (f.fitting.len(), f.curve.points());
+    for (&c, exact) in corners.iter().zip([120.0_f64, 90.0, 30.0]) {
+        let j = f.fitting.iter().position(|&i| i == c).unwrap();
+        assert!(f.curve.sharp()[j]);
+        let (inc, out) = (p[j] - p[(j + k - 1) % k], p[(j + 1) % k] - p[j]);
+        let turn = (inc.x() * out.y() - inc.y() * out.x())
+            .atan2(inc.dot(&out))
+            .to_degrees();
+        assert!(
+            (turn.abs() - exact).abs() < 1.0,
+            "corner {c}: {turn}° for {exact}°"
+        );
+    }
+}

@@ -61,6 +61,7 @@ pub(crate) fn tables() -> Result<Vec<Table>, DynError> {
         scaling_table()?,
         super::subdiv_fit_kurbo::table()?,
         super::subdiv_fit_glyphs::table()?,
+        density_table()?,
     ])
 }
 
@@ -102,6 +103,49 @@ fn fit_table() -> Result<Table, DynError> {
     }
     Ok(Table {
         name: "subdiv-fit-table1".into(),
+        markdown: md,
+        checked: Value::Array(rows),
+    })
+}
+
+/// Density invariance at a fine tolerance: the closed petals with 10k, 300k and 1M samples.
+fn density_table() -> Result<Table, DynError> {
+    let tol = 1e-3;
+    let mut md = String::from(
+        "## subdiv-fit: one outline sampled with 10k, 300k and 1M points (tolerance 0.001, default options)\n\n\
+         The closed petals (`cases::closed_petals(density)`) at densities 156, 4688 and 15625. The control points must not grow with the sampling (target: within 20 % of each other).\n\
+         Times (not checked) are one release-mode fit on the machine that ran `cargo xtask tables`.\n\n\
+         | points | control points | sharp | max data→curve | max curve→data | time (s) |\n\
+         |---|---|---|---|---|---|\n",
+    );
+    let mut rows = Vec::new();
+    for density in [156, 4688, 15625] {
+        let data = closed_petals(density);
+        let (f, ms) = median_ms(1, || {
+            Ok(fit(
+                &data,
+                subdiv_fit::Closure::Closed,
+                &FitOptions::new(tol),
+            )?)
+        })?;
+        let r = f.last().ok_or("empty report")?;
+        let sharp = f.curve.sharp().iter().filter(|s| **s).count();
+        writeln!(
+            md,
+            "| {} | {} | {sharp} | {:.5} | {:.5} | {:.2} |",
+            data.len(),
+            r.control_points,
+            r.max_data_to_curve,
+            r.max_curve_to_data,
+            ms / 1e3
+        )?;
+        rows.push(json!({
+            "points": data.len(), "control_points": r.control_points, "sharp": sharp,
+            "max_data_to_curve": r.max_data_to_curve, "max_curve_to_data": r.max_curve_to_data,
+        }));
+    }
+    Ok(Table {
+        name: "subdiv-fit-density".into(),
         markdown: md,
         checked: Value::Array(rows),
     })

@@ -121,7 +121,7 @@ impl ScaledBernstein {
 
     /// Bernstein coefficients times N!: bₖ·N! = aₖ·k!(N − k)! (exact integers, same signs).
     #[must_use]
-    pub fn bernstein_times_factorial(&self) -> Vec<BigInt> {
+    pub(crate) fn bernstein_times_factorial(&self) -> Vec<BigInt> {
         let n = self.degree();
         let mut fact = vec![BigInt::one(); n + 1];
         for k in 1..=n {
@@ -137,7 +137,7 @@ impl ScaledBernstein {
     /// The sign (−1, 0, 1) of the polynomial at the dyadic point t = m / 2ʲ ∈ [0, 1], exactly:
     /// 2ʲᴺ f(t) = Σ aₖ mᵏ (2ʲ − m)ᴺ⁻ᵏ.
     #[must_use]
-    pub fn sign_at(&self, m: &BigInt, j: u32) -> i8 {
+    pub(crate) fn sign_at(&self, m: &BigInt, j: u32) -> i8 {
         let n = self.degree();
         let q = (BigInt::one() << j) - m;
         // Horner-like: Σ aₖ mᵏ qᴺ⁻ᵏ, accumulating powers of q from the top.

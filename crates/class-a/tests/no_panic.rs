@@ -175,6 +175,54 @@ proptest! {
     }
 }
 
+proptest! {
+    #![proptest_config(ProptestConfig::with_cases(100))]
+
+    /// Accessors of the solved curves and the small matrices: finite values from finite
+    /// solutions, IEEE arithmetic (no panic) on wild matrices, and the exact identities
+    /// (transpose twice, rows and columns, inverse times matrix).
+    #[test]
+    fn accessors_and_matrices(a0 in v2(), a1 in v2(), a2 in v2(), b in v3(), n in degree(), s in wild(), th in wild(), t in wild()) {
+        if let Ok(tp) = TypicalPlanar::from_points(&a0, &a1, &a2, n.min(64)) {
+            prop_assert!(tp.b0().is_finite() && tp.mu().is_finite());
+            prop_assert!(tp.matrix().iter().all(|x| x.is_finite()));
+            let mut out = Vec::new();
+            tp.control_points_into(&mut out);
+            prop_assert!(out.iter().all(Vector2::is_finite));
+            if (0.0..=1.0).contains(&t) {
+                prop_assert!(!tp.curvature(t).is_nan());
+            }
+        }
+        let a = [Vector3::new(a0.x(), a0.y(), s), Vector3::new(a1.x(), a1.y(), th), Vector3::new(a2.x(), a2.y(), t), b];
+        if let Ok(ts) = TypicalSpatial::solve(&a, n.min(12), SpatialRequirement::ClassA) {
+            prop_assert!(ts.matrix().iter().all(|x| x.is_finite()));
+            prop_assert!(!ts.class_a_margin().is_nan());
+        }
+        let m2 = typical_matrix2(s, th);
+        if let Ok(c) = ClassACurve::new(&a0, &a1, &m2, n) {
+            prop_assert_eq!(c.matrix(), m2);
+        }
+        let m3 = Matrix3::from_fn(|i, j| [s, th, t][(i + j) % 3]);
+        if [s, th, t].iter().all(|x| x.is_finite()) && b.is_finite() {
+            prop_assert_eq!(m3.transpose().transpose(), m3);
+            prop_assert_eq!(Matrix3::from_rows(m3.to_rows()), m3);
+            let cols = [b, Vector3::new(s, th, t), b.cross(&Vector3::new(1.0, 0.0, 0.0))];
+            prop_assert_eq!(Matrix3::from_columns(&cols).transpose().to_rows()[0], cols[0].to_array());
+        }
+        let _ = (m3.scale(t), m3.symmetric_eigenvalues(), m3.singular_value_range(), m3.determinant());
+        let _ = Matrix3::cross_matrix(&b) * b;
+        if let Some(inv) = m2.try_inverse() {
+            let id = inv * m2;
+            if id.iter().all(|x| x.is_finite()) && m2.iter().all(|x| x.abs() < 1e6) && m2.determinant().abs() > 1e-6 {
+                prop_assert!((id - Matrix2::identity()).iter().all(|x| x.abs() < 1e-6), "{id:?}");
+            }
+        }
+        if let Ok(r) = ClassAReport::of_matrix(&m3) {
+            let _ = r.is_class_a();
+        }
+    }
+}
+
 #[test]
 fn limits_are_stated() {
     const { assert!(MAX_PIECES > 0 && MAX_SUBDIVISION_DEPTH > 0 && SUBCURVE_SAMPLES > 0) };
@@ -216,4 +264,24 @@ fn every_public_item_is_in_this_suite() {
         include_str!("no_panic.rs"),
     );
     assert!(missing.is_empty(), "not covered by this suite: {missing:?}");
+}
+
+/// Every public function and method of the crate is called above (a new one fails here until
+/// it joins this suite).
+#[test]
+fn every_public_function_is_called_in_this_suite() {
+    let sources = bez_core::proptest_support::crate_sources(env!("CARGO_MANIFEST_DIR"));
+    let sources: Vec<(&str, &str)> = sources
+        .iter()
+        .map(|(f, t)| (f.as_str(), t.as_str()))
+        .collect();
+    let uncalled = bez_core::proptest_support::uncalled_in_suite(
+        include_str!("../src/lib.rs"),
+        &sources,
+        include_str!("no_panic.rs"),
+    );
+    assert!(
+        uncalled.is_empty(),
+        "not called by this suite: {uncalled:?}"
+    );
 }

@@ -331,11 +331,16 @@ impl TypicalSpatial {
     /// [`INTERPOLATION_TOLERANCE`] ([`Interpolation`]).
     ///
     /// ```
-    /// use class_a::{SpatialRequirement, TypicalSpatial, cases};
-    /// # #[cfg(feature = "paper")] {
-    /// let t = TypicalSpatial::solve(&cases::fig8_points(), 7, SpatialRequirement::MonotoneTorsion)?;
+    /// use bez_core::Vector3;
+    /// use class_a::{SpatialRequirement, TypicalSpatial};
+    /// let a = [
+    ///     Vector3::new(0.0, 0.0, 0.0),
+    ///     Vector3::new(1.0, 0.0, 0.2),
+    ///     Vector3::new(6.21, 6.54, 1.79),
+    ///     Vector3::new(6.12, 9.44, 2.73),
+    /// ];
+    /// let t = TypicalSpatial::solve(&a, 7, SpatialRequirement::MonotoneTorsion)?;
     /// assert!(class_a::torsion_certificate(&t.curve()?)?.is_monotone());
-    /// # }
     /// # Ok::<(), class_a::ClassAError>(())
     /// ```
     ///

@@ -115,7 +115,7 @@ fn low_continuity_is_rejected() {
 }
 
 #[test]
-fn underdetermined_problem_is_singular() {
+fn underdetermined_problem_is_reported_as_undetermined() {
     // Only u = 0 fixed, everything else free: Laplace's residual vanishes on many surfaces.
     let mut p = unit_square_problem();
     p.u1 = Side::Free;
@@ -124,7 +124,7 @@ fn underdetermined_problem_is_singular() {
     for method in Method::ALL {
         let err = solve(&p, &Discretization::single(4, 4), method).unwrap_err();
         assert!(
-            matches!(err, PdeError::SingularSystem { .. }),
+            matches!(err, PdeError::Undetermined { .. }),
             "{method:?}: {err}"
         );
     }

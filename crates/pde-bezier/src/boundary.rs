@@ -130,7 +130,7 @@ fn fit_samples(
             for (&g, &w) in support.iter().zip(&vals) {
                 match coefs[g] {
                     Some(c) => target -= c * w,
-                    None => system.entries.push((row, index[g], w)),
+                    None => system.push(row, index[g], w),
                 }
             }
             system.rhs[row] = target.to_array();

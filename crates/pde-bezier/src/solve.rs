@@ -67,7 +67,8 @@ impl Method {
 pub struct Solution {
     /// The approximating surface.
     pub surface: PatchGrid,
-    /// The paper's objective M = Σ_patches h_u h_v Σ_ij |b_ij|² at the solution (eq. (4)).
+    /// The paper's objective M = Σ_patches h_u h_v Σ_ij |b_ij|² at the solution (eq. (4)),
+    /// saturated at `f64::MAX` for operators whose coefficients square past the f64 range.
     pub objective: f64,
     /// The convex-hull bound max |b_ij| ≥ max |R(u, v)| (Sec. 3).
     pub residual_bound: f64,
@@ -308,7 +309,7 @@ impl Assembly {
     /// # Errors
     /// [`PdeError::Undetermined`] when the boundary data leaves the system rank deficient,
     /// [`PdeError::IllConditioned`] when its condition estimate is above
-    /// [`crate::CONDITION_LIMIT`], [`PdeError::NonFinite`] when the objective overflows.
+    /// [`crate::CONDITION_LIMIT`].
     pub fn solve(&self, method: Method) -> Result<Solution, PdeError> {
         let n_all = self.fixed.len();
         let mut index = vec![usize::MAX; n_all];
@@ -397,7 +398,7 @@ impl Assembly {
             };
             let base = p * rows_per;
             let rhs = self.eliminate(patch, &rows, &target, index, |ra, col, v| {
-                system.entries.push((base + ra, col, v));
+                system.push(base + ra, col, v);
             });
             for (ra, b) in rhs.into_iter().enumerate() {
                 system.rhs[base + ra] = b;
@@ -418,16 +419,12 @@ impl Assembly {
             let tw = (&ext.transpose() * &gram).scaled(weight);
             let rows = &tw * &patch.map;
             let target = &tw * &patch.target;
-            let mut local = Vec::new();
             let rhs = self.eliminate(patch, &rows, &target, index, |ra, col, v| {
-                local.push((ra, col, v));
-            });
-            for (ra, col, v) in local {
                 let row = index[patch.support[ra]];
                 if row != usize::MAX {
-                    system.entries.push((row, col, v));
+                    system.push(row, col, v);
                 }
-            }
+            });
             for (ra, b) in rhs.into_iter().enumerate() {
                 let row = index[patch.support[ra]];
                 if row != usize::MAX {
@@ -460,7 +457,7 @@ impl Assembly {
             let lrow = &w * &patch.map;
             let target = &w * &patch.target;
             let rhs = self.eliminate(patch, &lrow, &target, index, |_, col, v| {
-                system.entries.push((row, col, v));
+                system.push(row, col, v);
             });
             system.rhs[row] = rhs[0];
         }
@@ -496,11 +493,12 @@ impl Assembly {
                 .collect();
             surfaces.push(BezierSurface::from_flat(n, m, points)?);
         }
-        // Back to the caller's scale of L and F.
-        let objective = objective * self.scale * self.scale;
-        let residual_bound = bound * self.scale;
+        // Back to the caller's scale of L and F; saturated at f64::MAX where the product
+        // overflows (coefficients beyond about 1e154 square past the f64 range).
+        let objective = (objective * self.scale * self.scale).min(f64::MAX);
+        let residual_bound = (bound * self.scale).min(f64::MAX);
         for (what, value) in [("objective", objective), ("residual bound", residual_bound)] {
-            if !value.is_finite() {
+            if value.is_nan() {
                 return Err(PdeError::NonFinite { what, value });
             }
         }

@@ -42,7 +42,7 @@ pub(crate) enum Kind {
 pub(crate) struct System {
     pub(crate) nrows: usize,
     pub(crate) ncols: usize,
-    pub(crate) entries: Vec<(usize, usize, f64)>,
+    pub(crate) entries: Vec<Triplet<usize, usize, f64>>,
     pub(crate) rhs: Vec<[f64; 3]>,
 }
 
@@ -54,6 +54,11 @@ pub(crate) struct Solved {
 }
 
 impl System {
+    /// Adds a(row, col) += val.
+    pub(crate) fn push(&mut self, row: usize, col: usize, val: f64) {
+        self.entries.push(Triplet { row, col, val });
+    }
+
     pub(crate) fn new(nrows: usize, ncols: usize) -> Self {
         Self {
             nrows,
@@ -80,7 +85,7 @@ impl System {
         if m < n || (kind == Kind::Square && m != n) {
             return Err(undetermined(f64::INFINITY));
         }
-        for &(_, _, v) in &self.entries {
+        for &Triplet { val: v, .. } in &self.entries {
             if !v.is_finite() {
                 return Err(PdeError::NonFinite {
                     what: "system matrix entry",
@@ -96,13 +101,9 @@ impl System {
                 });
             }
         }
-        let triplets: Vec<Triplet<usize, usize, f64>> = self
-            .entries
-            .iter()
-            .map(|&(row, col, val)| Triplet { row, col, val })
-            .collect();
-        let mut a = SparseColMat::<usize, f64>::try_new_from_triplets(m, n, &triplets)
+        let mut a = SparseColMat::<usize, f64>::try_new_from_triplets(m, n, &self.entries)
             .map_err(|_| undetermined(f64::INFINITY))?;
+        drop(self.entries);
         // Row scaling (square systems only: it would reweight a least-squares objective).
         let mut row_scale = vec![1.0; m];
         if kind == Kind::Square {
@@ -276,7 +277,7 @@ mod tests {
                 let mut b = 0.0;
                 for (j, w) in [(i.wrapping_sub(1), -1.0), (i, 2.0), (i + 1, -1.0)] {
                     if j < n {
-                        s.entries.push((i, j, w));
+                        s.push(i, j, w);
                         b += w * exact[j];
                     }
                 }
@@ -309,8 +310,8 @@ mod tests {
             for i in 0..count {
                 let t = i as f64 / count as f64;
                 let y = 1.0 + 2.0 * t + 0.01 * (i as f64 * 1.7).sin();
-                s.entries.push((i, 0, 1.0));
-                s.entries.push((i, 1, t));
+                s.push(i, 0, 1.0);
+                s.push(i, 1, t);
                 s.rhs[i] = [y, 0.0, 0.0];
                 sums[0] += 1.0;
                 sums[1] += t;
@@ -319,7 +320,7 @@ mod tests {
                 sums[4] += t * y;
             }
             for k in 0..extra {
-                s.entries.push((count + k, 2 + k, 1.0));
+                s.push(count + k, 2 + k, 1.0);
                 s.rhs[count + k] = [k as f64, 0.0, 0.0];
             }
             let solved = s.solve(Kind::LeastSquares, "test").unwrap();
@@ -339,8 +340,8 @@ mod tests {
         // Two equal columns: rank deficient.
         let mut s = System::new(3, 2);
         for i in 0..3 {
-            s.entries.push((i, 0, 1.0 + i as f64));
-            s.entries.push((i, 1, 1.0 + i as f64));
+            s.push(i, 0, 1.0 + i as f64);
+            s.push(i, 1, 1.0 + i as f64);
         }
         assert!(matches!(
             s.solve(Kind::LeastSquares, "t"),
@@ -348,8 +349,9 @@ mod tests {
         ));
         // Nearly equal columns and rows: full rank, condition ≈ 4e14.
         let mut s = System::new(2, 2);
-        s.entries
-            .extend([(0, 0, 1.0), (0, 1, 1.0), (1, 0, 1.0), (1, 1, 1.0 + 1e-14)]);
+        for (i, j, v) in [(0, 0, 1.0), (0, 1, 1.0), (1, 0, 1.0), (1, 1, 1.0 + 1e-14)] {
+            s.push(i, j, v);
+        }
         match s.solve(Kind::Square, "t") {
             Err(PdeError::IllConditioned { condition, .. }) => {
                 assert!(condition > 1e13 && condition < 1e16, "{condition}");
@@ -358,8 +360,8 @@ mod tests {
         }
         // An empty column.
         let mut s = System::new(2, 2);
-        s.entries.push((0, 0, 1.0));
-        s.entries.push((1, 0, 1.0));
+        s.push(0, 0, 1.0);
+        s.push(1, 0, 1.0);
         assert!(matches!(
             s.solve(Kind::Square, "t"),
             Err(PdeError::Undetermined { .. })

@@ -4,8 +4,9 @@
 
 use std::hint::black_box;
 
+use bez_core::{BezierSurface, Vector3};
 use criterion::{BenchmarkId, Criterion, criterion_group, criterion_main};
-use pde_bezier::{Assembly, Discretization, Method, cases};
+use pde_bezier::{Assembly, Discretization, Method, Operator, Problem, cases};
 
 // Assembly includes the clamped least-squares fits of the sampled boundary data.
 
@@ -66,5 +67,54 @@ fn methods_8x8(c: &mut Criterion) {
     group.finish();
 }
 
-criterion_group!(benches, single_patch, patch_grid, methods_8x8);
+/// Sparse Galerkin at design scale (assembly + solve): bi-quintic C¹ patches on Laplace's
+/// equation with a quintic exact solution, 16 x 16 (4,096 unknowns), 32 x 32 (16,384) and a
+/// 1 x 800 strip (12,800); the same runs as the pde-bezier-scale table.
+fn scale_galerkin(c: &mut Criterion) {
+    let pts = (0..36)
+        .map(|i| {
+            let t = f64::from(i);
+            Vector3::new((0.7 * t).sin(), (1.3 * t).cos(), (0.37 * t).sin())
+        })
+        .collect();
+    let Ok(x) = BezierSurface::from_flat(5, 5, pts) else {
+        return;
+    };
+    let Ok(op) = Operator::second_order(1.0, 1.0) else {
+        return;
+    };
+    let Ok(problem) = Problem::manufactured(op, &x) else {
+        return;
+    };
+    let mut group = c.benchmark_group("pde_bezier_scale_galerkin");
+    group.sample_size(10);
+    for (pu, pv) in [(16usize, 16usize), (32, 32), (1, 800)] {
+        let disc = Discretization {
+            degree_u: 5,
+            degree_v: 5,
+            patches_u: pu,
+            patches_v: pv,
+            smoothness_u: 1,
+            smoothness_v: 1,
+        };
+        group.bench_with_input(
+            BenchmarkId::from_parameter(format!("{pu}x{pv}")),
+            &disc,
+            |b, disc| {
+                b.iter(|| {
+                    Assembly::new(black_box(&problem), disc).and_then(|a| a.solve(Method::Galerkin))
+                });
+            },
+        );
+    }
+    group.finish();
+}
+
+criterion_group!(
+    benches,
+    single_patch,
+    patch_grid,
+    methods_8x8,
+    scale_galerkin
+);
 criterion_main!(benches);

@@ -1,11 +1,12 @@
 //! Boundary data: clamped least-squares fit of side curves into the side's spline space, and
 //! the control-point rows they fix.
 
+use crate::dense::Dense;
 use crate::error::PdeError;
 use crate::problem::SideCurve;
-use crate::space::Space;
+use crate::space::{End, Space};
+use crate::sparse::{Kind, System};
 use bez_core::Vector3;
-use nalgebra::{DMatrix, Dyn, U3};
 
 /// A side curve expressed in a spline space: coefficients and the fit's max sample error.
 pub(crate) struct Fitted {
@@ -15,7 +16,8 @@ pub(crate) struct Fitted {
 
 /// Fits a side curve into `space`: the first `clamp_start` and last `clamp_end` coefficients
 /// interpolate the curve's end derivatives (orders 0..clamp), the rest minimize the squared
-/// error at the samples. Polynomial data of a degree the space holds is reproduced exactly.
+/// error at the samples (a sparse QR least-squares solve). A Bézier curve of a degree the
+/// (non-periodic) space holds is converted exactly by blossoming instead.
 pub(crate) fn fit(
     side: &'static str,
     curve: &SideCurve,
@@ -34,69 +36,12 @@ pub(crate) fn fit(
     }
     let default_count = (4 * n).max(64);
     let (ts, values) = samples(side, curve, space, default_count)?;
-    let mut coefs: Vec<Option<Vector3>> = vec![None; n];
-    for (at_end, count) in [(false, clamp_start), (true, clamp_end)] {
-        if count == 0 {
-            continue;
+    let coefs = match curve {
+        SideCurve::Bezier(c) if c.degree() <= space.degree && space.to_clamped.is_none() => {
+            blossom_coefficients(c, space)?
         }
-        let jet = jet(side, curve, at_end, count)?;
-        let d = space.end_derivatives(at_end, count);
-        let cols: Vec<usize> = if at_end {
-            (n - count..n).collect()
-        } else {
-            (0..count).collect()
-        };
-        let block = DMatrix::from_fn(count, count, |a, b| d[(a, cols[b])]);
-        let rhs = DMatrix::from_fn(count, 3, |a, c| jet[a][c]);
-        let sol = block.lu().solve(&rhs).ok_or(PdeError::SingularSystem {
-            method: "boundary clamping",
-            unknowns: count,
-            pivot_ratio: 0.0,
-        })?;
-        for (a, &col) in cols.iter().enumerate() {
-            coefs[col] = Some(Vector3::new(sol[(a, 0)], sol[(a, 1)], sol[(a, 2)]));
-        }
-    }
-    let free: Vec<usize> = (0..n).filter(|&i| coefs[i].is_none()).collect();
-    if !free.is_empty() {
-        let mut index = vec![usize::MAX; n];
-        for (k, &i) in free.iter().enumerate() {
-            index[i] = k;
-        }
-        let mut a = DMatrix::<f64>::zeros(ts.len(), free.len());
-        let mut b = nalgebra::OMatrix::<f64, Dyn, U3>::zeros(ts.len());
-        for (row, (&t, value)) in ts.iter().zip(&values).enumerate() {
-            let (support, vals) = space.basis_at(t);
-            let mut target = *value;
-            for (&g, &w) in support.iter().zip(&vals) {
-                match coefs[g] {
-                    Some(c) => target -= c * w,
-                    None => a[(row, index[g])] += w,
-                }
-            }
-            b.set_row(row, &nalgebra::RowVector3::from(target.to_array()));
-        }
-        let svd = a.svd(true, true);
-        let smax = svd.singular_values.max();
-        let smin = svd.singular_values.min();
-        if smin.is_nan() || smin <= 1e-10 * smax || ts.len() < free.len() {
-            return Err(PdeError::TooFewSamples {
-                side,
-                what: "samples",
-                given: ts.len(),
-                needed: free.len() + clamp_start + clamp_end,
-            });
-        }
-        let x = svd.solve(&b, 0.0).map_err(|_| PdeError::SingularSystem {
-            method: "boundary fit",
-            unknowns: free.len(),
-            pivot_ratio: smin / smax,
-        })?;
-        for (k, &i) in free.iter().enumerate() {
-            coefs[i] = Some(Vector3::new(x[(k, 0)], x[(k, 1)], x[(k, 2)]));
-        }
-    }
-    let coefs: Vec<Vector3> = coefs.into_iter().map(Option::unwrap_or_default).collect();
+        _ => fit_samples(side, curve, space, (clamp_start, clamp_end), &ts, &values)?,
+    };
     let mut error: f64 = 0.0;
     for (&t, value) in ts.iter().zip(&values) {
         let (support, vals) = space.basis_at(t);
@@ -104,6 +49,102 @@ pub(crate) fn fit(
         error = error.max((p - value).norm());
     }
     Ok(Fitted { coefs, error })
+}
+
+/// The B-spline coefficients of a polynomial curve of degree ≤ n: c_i is the blossom of the
+/// curve (elevated to degree n) at the knots t_{i+1}, …, t_{i+n} (de Boor–Fix dual
+/// functionals), evaluated by de Casteljau steps with one knot per level. Exact up to
+/// rounding, with convex combinations only, at any degree.
+fn blossom_coefficients(
+    curve: &bez_core::BezierCurve<3>,
+    space: &Space,
+) -> Result<Vec<Vector3>, PdeError> {
+    let n = space.degree;
+    let elevated = curve.elevate(n - curve.degree())?;
+    let points = elevated.points();
+    Ok((0..space.n_coef)
+        .map(|i| {
+            let mut p = points.to_vec();
+            for (level, &t) in space.knots[i + 1..=i + n].iter().enumerate() {
+                for j in 0..n - level {
+                    p[j] = p[j] * (1.0 - t) + p[j + 1] * t;
+                }
+            }
+            p[0]
+        })
+        .collect())
+}
+
+/// The clamped least-squares fit of samples.
+fn fit_samples(
+    side: &'static str,
+    curve: &SideCurve,
+    space: &Space,
+    (clamp_start, clamp_end): (usize, usize),
+    ts: &[f64],
+    values: &[Vector3],
+) -> Result<Vec<Vector3>, PdeError> {
+    let n = space.n_coef;
+    let mut coefs: Vec<Option<Vector3>> = vec![None; n];
+    for (end, count) in [(End::Start, clamp_start), (End::Finish, clamp_end)] {
+        if count == 0 {
+            continue;
+        }
+        let jet = jet(side, curve, end, count)?;
+        let d = space.end_derivatives(end, count);
+        let cols: Vec<usize> = if end == End::Finish {
+            (n - count..n).collect()
+        } else {
+            (0..count).collect()
+        };
+        let block = Dense::from_fn(count, count, |a, b| d[(a, cols[b])]);
+        let rhs = Dense::from_fn(count, 3, |a, c| jet[a][c]);
+        let sol = block.solve(&rhs).ok_or(PdeError::Undetermined {
+            method: "boundary clamping",
+            unknowns: count,
+            condition: f64::INFINITY,
+        })?;
+        for (a, &col) in cols.iter().enumerate() {
+            coefs[col] = Some(Vector3::new(sol[(a, 0)], sol[(a, 1)], sol[(a, 2)]));
+        }
+    }
+    let free: Vec<usize> = (0..n).filter(|&i| coefs[i].is_none()).collect();
+    if !free.is_empty() {
+        let too_few = PdeError::TooFewSamples {
+            side,
+            what: "samples",
+            given: ts.len(),
+            needed: free.len() + clamp_start + clamp_end,
+        };
+        if ts.len() < free.len() {
+            return Err(too_few);
+        }
+        let mut index = vec![usize::MAX; n];
+        for (k, &i) in free.iter().enumerate() {
+            index[i] = k;
+        }
+        let mut system = System::new(ts.len(), free.len());
+        for (row, (&t, value)) in ts.iter().zip(values).enumerate() {
+            let (support, vals) = space.basis_at(t);
+            let mut target = *value;
+            for (&g, &w) in support.iter().zip(&vals) {
+                match coefs[g] {
+                    Some(c) => target -= c * w,
+                    None => system.push(row, index[g], w),
+                }
+            }
+            system.rhs[row] = target.to_array();
+        }
+        let solved = match system.solve(Kind::LeastSquares, "boundary fit") {
+            Err(PdeError::Undetermined { .. }) => return Err(too_few),
+            other => other?,
+        };
+        for (k, &i) in free.iter().enumerate() {
+            let [x, y, z] = solved.x[k];
+            coefs[i] = Some(Vector3::new(x, y, z));
+        }
+    }
+    Ok(coefs.into_iter().map(Option::unwrap_or_default).collect())
 }
 
 fn check_finite(v: &Vector3) -> Result<(), PdeError> {
@@ -173,9 +214,10 @@ fn samples(
 fn jet(
     side: &'static str,
     curve: &SideCurve,
-    at_end: bool,
+    end: End,
     count: usize,
 ) -> Result<Vec<Vector3>, PdeError> {
+    let at_end = end == End::Finish;
     let t = if at_end { 1.0 } else { 0.0 };
     let out = match curve {
         SideCurve::Bezier(c) => c.eval_derivatives(t, count - 1)?,
@@ -255,8 +297,8 @@ mod tests {
             "{}",
             fitted.error
         );
-        let d0 = space.end_derivatives(false, 2);
-        let d1 = space.end_derivatives(true, 2);
+        let d0 = space.end_derivatives(End::Start, 2);
+        let d1 = space.end_derivatives(End::Finish, 2);
         for (d, at, end) in [(&d0, 0.0, 0), (&d1, 1.0, 1)] {
             for order in 0..2 {
                 let value: f64 = (0..space.n_coef)

@@ -164,11 +164,10 @@ impl Kernel {
             Self::basis(a, 1.0, 0),
             Self::basis(a, 1.0, 1),
         ];
-        let m = nalgebra::Matrix4::from_fn(|i, j| rows[i][j]);
+        let m = crate::dense::Dense::from_fn(4, 4, |i, j| rows[i][j]);
         let c = m
-            .lu()
-            .solve(&nalgebra::Vector4::from(values))
-            .map_or([0.0; 4], |c| [c[0], c[1], c[2], c[3]]);
+            .solve(&crate::dense::Dense::from_fn(4, 1, |i, _| values[i]))
+            .map_or([0.0; 4], |c| [c[(0, 0)], c[(1, 0)], c[(2, 0)], c[(3, 0)]]);
         Self { a, c }
     }
 

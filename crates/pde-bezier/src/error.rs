@@ -124,17 +124,54 @@ pub enum PdeError {
         /// The distance between the two prescribed values.
         gap: f64,
     },
-    /// The linear system is singular or too ill-conditioned to trust.
+    /// The boundary data leaves the solution undetermined: the system is rank deficient
+    /// (its estimated condition number is infinite or beyond 1/ε).
     #[error(
-        "the {method} system with {unknowns} unknowns is singular or ill-conditioned (pivot ratio {pivot_ratio:e}): the boundary data leaves the solution undetermined; fix more sides or raise the continuity"
+        "the {method} system with {unknowns} unknowns is rank deficient (condition estimate {condition:e}): the boundary data leaves the solution undetermined; fix more sides or raise the continuity"
     )]
-    SingularSystem {
+    Undetermined {
         /// The method's name.
         method: &'static str,
-        /// Number of unknown control points.
+        /// Number of unknowns.
         unknowns: usize,
-        /// Smallest over largest pivot.
-        pivot_ratio: f64,
+        /// The condition estimate (infinite for an exactly singular system).
+        condition: f64,
+    },
+    /// The system has full rank but is too ill-conditioned for the answer to be trusted.
+    #[error(
+        "the {method} system with {unknowns} unknowns is ill-conditioned (condition estimate {condition:e} above {limit:e}): lower the degree, use fewer, larger patches, or rescale the problem"
+    )]
+    IllConditioned {
+        /// The method's name.
+        method: &'static str,
+        /// Number of unknowns.
+        unknowns: usize,
+        /// The condition estimate.
+        condition: f64,
+        /// The largest accepted condition estimate.
+        limit: f64,
+    },
+    /// The principal symbol of the operator vanishes in some direction (ξ, η) ≠ 0.
+    #[error(
+        "the operator is not elliptic: its principal symbol (order {order}) vanishes at (ξ, η) = ({xi:.6}, {eta:.6}); the boundary-value problem is not well posed"
+    )]
+    NotElliptic {
+        /// The operator's order k.
+        order: usize,
+        /// The direction where the symbol vanishes (unit vector).
+        xi: f64,
+        /// Second component of the direction.
+        eta: f64,
+    },
+    /// A size the caller chose is beyond the crate's limit (checked before any allocation).
+    #[error("{what} is {value}, above the limit {limit}")]
+    TooLarge {
+        /// What is counted.
+        what: &'static str,
+        /// The value asked for.
+        value: usize,
+        /// The largest accepted value.
+        limit: usize,
     },
     /// A knot vector decreases somewhere.
     #[error("knot vector in {direction} decreases at index {index}: knots must be non-decreasing")]

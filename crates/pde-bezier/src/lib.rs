@@ -45,22 +45,29 @@ mod bernstein_ops;
 mod boundary;
 #[cfg(feature = "paper")]
 pub mod cases;
+mod dense;
 mod error;
 mod grid;
 mod iges;
+mod limits;
 mod manufactured;
 mod problem;
+mod quadrature;
 mod solve;
 mod space;
+mod sparse;
 mod spline_surface;
 mod step;
+mod symbol;
 
 pub use error::PdeError;
 pub use grid::{ErrorNorms, PatchGrid};
 pub use iges::{read_iges, write_iges};
+pub use limits::{MAX_COEFFICIENTS, MAX_LOCAL_ENTRIES, MAX_PATCHES, MAX_SOLVE_DEGREE};
 pub use manufactured::{apply_operator, side_of};
 pub use problem::{Discretization, Operator, Problem, Side, SideCurve, Term};
 pub use solve::{Assembly, Method, Solution, solve};
+pub use sparse::CONDITION_LIMIT;
 pub use spline_surface::BSplineSurface;
 pub use step::{read_step, write_step};
 

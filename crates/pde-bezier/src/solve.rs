@@ -1,17 +1,24 @@
 //! Assembly of the residual map and the four solvers on one trial space.
+//!
+//! Every global system is sparse: each patch touches only the (n+1)(m+1) spline
+//! coefficients of its support, so assembly is linear in the number of patches and the
+//! solves are sparse LU (Galerkin, collocation) or sparse Householder QR (the two least
+//! squares methods, which never form normal equations).
 
-use crate::bernstein_ops::{bernstein_values, derivative_matrix, elevation_matrix, gram_matrix};
+use crate::bernstein_ops::{
+    bernstein_values, derivative_matrix, elevation_matrix, gram_matrix, gram_root,
+};
 use crate::boundary::fit;
+use crate::dense::Dense;
 use crate::error::PdeError;
 use crate::grid::PatchGrid;
+use crate::limits;
 use crate::problem::{Discretization, Problem, Side};
-use crate::space::Space;
+use crate::space::{End, Space};
+use crate::sparse::{Kind, System};
 use crate::spline_surface::BSplineSurface;
 use bez_core::{BezierSurface, Vector3};
-use nalgebra::{DMatrix, Dyn, OMatrix, U3};
 
-/// Three right-hand sides (x, y, z) as columns.
-type Rhs3 = OMatrix<f64, Dyn, U3>;
 /// Control points fixed by the sides (None = free) and the largest boundary-fit error.
 type Fixed = (Vec<Option<Vector3>>, f64);
 
@@ -21,8 +28,10 @@ type Fixed = (Vec<Option<Vector3>>, f64);
 pub enum Method {
     /// The paper's objective (4): minimize Σ_patches h_u h_v Σ_ij |b_ij|², the squared
     /// Bernstein coefficients of the residual R = L P − F (area-weighted, Sec. 3).
+    /// Solved by sparse Householder QR.
     BernsteinLeastSquares,
-    /// The exact L² norm ∫∫ |R|² du dv (Bernstein Gram matrices instead of the identity).
+    /// The exact L² norm ∫∫ |R|² du dv, as ‖(Q_u ⊗ Q_v) b‖² with Q a square root of the
+    /// Bernstein Gram matrix at Gauss–Legendre points; solved by sparse Householder QR.
     IntegralLeastSquares,
     /// Bloor–Wilson collocation: R = 0 at the Greville points of the free coefficients.
     Collocation,
@@ -58,7 +67,8 @@ impl Method {
 pub struct Solution {
     /// The approximating surface.
     pub surface: PatchGrid,
-    /// The paper's objective M = Σ_patches h_u h_v Σ_ij |b_ij|² at the solution (eq. (4)).
+    /// The paper's objective M = Σ_patches h_u h_v Σ_ij |b_ij|² at the solution (eq. (4)),
+    /// saturated at `f64::MAX` for operators whose coefficients square past the f64 range.
     pub objective: f64,
     /// The convex-hull bound max |b_ij| ≥ max |R(u, v)| (Sec. 3).
     pub residual_bound: f64,
@@ -66,6 +76,10 @@ pub struct Solution {
     pub boundary_fit_error: f64,
     /// Number of free control points (unknowns per coordinate).
     pub unknowns: usize,
+    /// Estimated condition number of the solved (row- and column-scaled) system: the
+    /// Frobenius condition number ‖A‖_F ‖A⁺‖_F ≥ κ₂, from random probes (1 when there is
+    /// nothing to solve). About log₁₀ of it digits of the coefficients may be lost.
+    pub condition: f64,
     /// The same surface as one clamped B-spline surface (C^r joins as knot multiplicities).
     pub spline: BSplineSurface,
 }
@@ -73,7 +87,7 @@ pub struct Solution {
 /// A problem assembled on a trial space: the residual map of every patch, the fixed control
 /// points and the right-hand side, ready for any [`Method`].
 ///
-/// Assembly is O(P · (n m)²) for P patches; the solves are dense in the free unknowns.
+/// Assembly is O(P · ((n+1)(m+1))³) for P patches, linear in P; the solves are sparse.
 #[derive(Debug, Clone)]
 #[non_exhaustive]
 pub struct Assembly {
@@ -86,18 +100,20 @@ pub struct Assembly {
     fixed: Vec<Option<Vector3>>,
     fit_error: f64,
     k: usize,
+    /// The operator and F were divided by this (the largest |coefficient|).
+    scale: f64,
 }
 
 #[derive(Debug, Clone)]
 struct PatchMap {
+    /// Patch indices (pu, pv).
+    at: (usize, usize),
     /// Global coefficient indices of the local unknowns.
     support: Vec<usize>,
     /// (l+1)(r+1) × support.len(): residual Bernstein coefficients of L P.
-    map: DMatrix<f64>,
+    map: Dense,
     /// (l+1)(r+1) × 3: Bernstein coefficients of F.
-    target: OMatrix<f64, Dyn, U3>,
-    /// (n+1)(m+1) × support.len(): the patch's control points.
-    ext: DMatrix<f64>,
+    target: Dense,
 }
 
 const SIDE_NAMES: [&str; 4] = ["u=0", "u=1", "v=0", "v=1"];
@@ -106,18 +122,17 @@ impl Assembly {
     /// Assembles `problem` on the trial space `disc`.
     ///
     /// # Errors
-    /// [`PdeError::PeriodicMismatch`], [`PdeError::SideDataCount`], [`PdeError::DegreeTooLow`],
-    /// [`PdeError::Smoothness`] (r < k − 1 between patches), [`PdeError::NoPatches`], boundary-fit
-    /// errors and [`PdeError::CornerMismatch`] when adjacent sides disagree.
+    /// [`PdeError::TooLarge`] for sizes over the crate's limits ([`crate::MAX_SOLVE_DEGREE`],
+    /// [`crate::MAX_PATCHES`], [`crate::MAX_COEFFICIENTS`], [`crate::MAX_LOCAL_ENTRIES`]),
+    /// [`PdeError::NotElliptic`], [`PdeError::PeriodicMismatch`], [`PdeError::SideDataCount`],
+    /// [`PdeError::DegreeTooLow`], [`PdeError::Smoothness`] (r < k − 1 between patches),
+    /// [`PdeError::NoPatches`], boundary-fit errors and [`PdeError::CornerMismatch`] when
+    /// adjacent sides disagree.
     pub fn new(problem: &Problem, disc: &Discretization) -> Result<Self, PdeError> {
+        limits::check(disc)?;
+        problem.operator.check_elliptic()?;
         let k = problem.operator.order();
         let half = k / 2;
-        if disc.patches_u == 0 || disc.patches_v == 0 {
-            return Err(PdeError::NoPatches {
-                patches_u: disc.patches_u,
-                patches_v: disc.patches_v,
-            });
-        }
         let sides = [&problem.u0, &problem.u1, &problem.v0, &problem.v1];
         for (pair, names) in [(0, ["u=0", "u=1"]), (2, ["v=0", "v=1"])] {
             let a = matches!(sides[pair], Side::Periodic);
@@ -201,7 +216,19 @@ impl Assembly {
             .rhs
             .as_ref()
             .map_or((0, 0), |f| (f.degree_u(), f.degree_v()));
+        for (what, degree) in [("degree of F in u", fu), ("degree of F in v", fv)] {
+            if degree > limits::MAX_SOLVE_DEGREE {
+                return Err(PdeError::TooLarge {
+                    what,
+                    value: degree,
+                    limit: limits::MAX_SOLVE_DEGREE,
+                });
+            }
+        }
         let terms = problem.operator.terms();
+        // L and F are divided by the largest |c|: the solution is unchanged, and
+        // coefficients of any finite size give entries of order one.
+        let scale = terms.iter().map(|t| t.coeff.abs()).fold(0.0, f64::max);
         let l = terms
             .iter()
             .map(|t| disc.degree_u.saturating_sub(t.du))
@@ -216,40 +243,39 @@ impl Assembly {
             .unwrap_or(0);
         let (fixed, fit_error) = fixed_points(problem, &su, &sv, half)?;
         // 1D residual factors K^{(p)} = h^{−p} Elev(n−p → l) D^p Ext per piece.
-        let factor = |space: &Space, p: usize, to: usize| -> Vec<DMatrix<f64>> {
+        let factor = |space: &Space, p: usize, to: usize| -> Vec<Dense> {
             let deg = space.degree;
             let d = derivative_matrix(deg, p);
             let from = deg.saturating_sub(p);
             let e = elevation_matrix(from, to);
-            let scale = space.width().powi(-(p as i32));
-            let ed = e * d * scale;
+            let ed = (&e * &d).scaled(space.width().powi(-(p as i32)));
             space.pieces.iter().map(|piece| &ed * &piece.ext).collect()
         };
-        let ku: Vec<Vec<DMatrix<f64>>> = terms.iter().map(|t| factor(&su, t.du, l)).collect();
-        let kv: Vec<Vec<DMatrix<f64>>> = terms.iter().map(|t| factor(&sv, t.dv, r)).collect();
+        let ku: Vec<Vec<Dense>> = terms.iter().map(|t| factor(&su, t.du, l)).collect();
+        let kv: Vec<Vec<Dense>> = terms.iter().map(|t| factor(&sv, t.dv, r)).collect();
         let nv = sv.n_coef;
         let mut patches = Vec::with_capacity(disc.patches_u * disc.patches_v);
         for (pu, piece_u) in su.pieces.iter().enumerate() {
             for (pv, piece_v) in sv.pieces.iter().enumerate() {
-                let mut map = DMatrix::<f64>::zeros(
+                let mut map = Dense::zeros(
                     (l + 1) * (r + 1),
                     piece_u.support.len() * piece_v.support.len(),
                 );
                 for (ti, term) in terms.iter().enumerate() {
-                    map += ku[ti][pu].kronecker(&kv[ti][pv]) * term.coeff;
+                    map.add_scaled(&ku[ti][pu].kron(&kv[ti][pv]), term.coeff / scale);
                 }
                 let support = piece_u
                     .support
                     .iter()
                     .flat_map(|&a| piece_v.support.iter().map(move |&b| a * nv + b))
                     .collect();
-                let target = rhs_on_patch(problem.rhs.as_ref(), &su, &sv, pu, pv, l, r)?;
-                let ext = piece_u.ext.kronecker(&piece_v.ext);
+                let target = rhs_on_patch(problem.rhs.as_ref(), &su, &sv, (pu, pv), (l, r))?
+                    .scaled(1.0 / scale);
                 patches.push(PatchMap {
+                    at: (pu, pv),
                     support,
                     map,
                     target,
-                    ext,
                 });
             }
         }
@@ -262,6 +288,7 @@ impl Assembly {
             fixed,
             fit_error,
             k,
+            scale,
         })
     }
 
@@ -280,7 +307,9 @@ impl Assembly {
     /// Solves for the free control points with `method` (three right-hand sides x, y, z).
     ///
     /// # Errors
-    /// [`PdeError::SingularSystem`] when the system is singular or too ill-conditioned.
+    /// [`PdeError::Undetermined`] when the boundary data leaves the system rank deficient,
+    /// [`PdeError::IllConditioned`] when its condition estimate is above
+    /// [`crate::CONDITION_LIMIT`].
     pub fn solve(&self, method: Method) -> Result<Solution, PdeError> {
         let n_all = self.fixed.len();
         let mut index = vec![usize::MAX; n_all];
@@ -293,172 +322,217 @@ impl Assembly {
         }
         let nf = free.len();
         let mut coefs: Vec<Vector3> = self.fixed.iter().map(|f| f.unwrap_or_default()).collect();
+        let mut condition = 1.0;
         if nf > 0 {
-            let (a, b) = match method {
-                Method::Collocation => self.collocation_system(&index, nf)?,
-                _ => self.projection_system(method, &index, nf),
+            let (system, kind) = match method {
+                Method::Collocation => (self.collocation_system(&index, nf), Kind::Square),
+                Method::Galerkin => (self.galerkin_system(&index, nf), Kind::Square),
+                Method::BernsteinLeastSquares | Method::IntegralLeastSquares => (
+                    self.least_squares_system(method, &index, nf),
+                    Kind::LeastSquares,
+                ),
             };
-            let x = match method {
-                Method::BernsteinLeastSquares | Method::IntegralLeastSquares => {
-                    solve_spd(a, &b, method)?
-                }
-                _ => solve_general(a, &b, method)?,
-            };
+            let solved = system.solve(kind, method.name())?;
+            condition = solved.condition;
             for (k, &g) in free.iter().enumerate() {
-                coefs[g] = Vector3::new(x[(k, 0)], x[(k, 1)], x[(k, 2)]);
+                let [x, y, z] = solved.x[k];
+                coefs[g] = Vector3::new(x, y, z);
             }
         }
-        self.finish(&coefs, nf)
+        self.finish(&coefs, nf, condition)
     }
 
-    /// Σ_patches T^T W (M c − f) = 0 restricted to the free test functions.
-    fn projection_system(
+    /// The local residual rows with the fixed coefficients moved to the right-hand side:
+    /// calls `emit(local row, global unknown, value)` and returns the right-hand side rows.
+    fn eliminate(
         &self,
-        method: Method,
+        patch: &PatchMap,
+        rows: &Dense,
+        target: &Dense,
         index: &[usize],
-        nf: usize,
-    ) -> (DMatrix<f64>, OMatrix<f64, Dyn, U3>) {
-        let (n, m, l, r) = (self.su.degree, self.sv.degree, self.l, self.r);
-        let weight = self.su.width() * self.sv.width();
-        let gram = match method {
-            Method::IntegralLeastSquares => Some(gram_matrix(l, l).kronecker(&gram_matrix(r, r))),
-            Method::Galerkin => Some(gram_matrix(n, l).kronecker(&gram_matrix(m, r))),
-            _ => None,
-        };
-        let mut a = DMatrix::<f64>::zeros(nf, nf);
-        let mut b = OMatrix::<f64, Dyn, U3>::zeros(nf);
-        for patch in &self.patches {
-            // Test functions T (rows of the weak form) and the weighted product T^T W.
-            let tw: DMatrix<f64> = match (method, &gram) {
-                (Method::Galerkin, Some(g)) => patch.ext.transpose() * g * weight,
-                (_, Some(g)) => patch.map.transpose() * g * weight,
-                _ => patch.map.transpose() * weight,
-            };
-            let local_a = &tw * &patch.map;
-            let local_b = &tw * &patch.target;
-            for (ra, &ga) in patch.support.iter().enumerate() {
-                let ia = index[ga];
-                if ia == usize::MAX {
-                    continue;
-                }
-                let mut rhs = local_b.row(ra).into_owned();
+        mut emit: impl FnMut(usize, usize, f64),
+    ) -> Vec<[f64; 3]> {
+        (0..rows.nrows())
+            .map(|ra| {
+                let mut rhs = [target[(ra, 0)], target[(ra, 1)], target[(ra, 2)]];
                 for (cb, &gb) in patch.support.iter().enumerate() {
-                    let v = local_a[(ra, cb)];
+                    let v = rows[(ra, cb)];
+                    if v == 0.0 {
+                        continue;
+                    }
                     match self.fixed[gb] {
-                        Some(p) => rhs -= nalgebra::RowVector3::from(p.to_array()) * v,
-                        None => a[(ia, index[gb])] += v,
+                        Some(p) => {
+                            for (c, x) in rhs.iter_mut().enumerate() {
+                                *x -= v * p[c];
+                            }
+                        }
+                        None => emit(ra, index[gb], v),
                     }
                 }
-                let cur = b.row(ia) + rhs;
-                b.set_row(ia, &cur);
+                rhs
+            })
+            .collect()
+    }
+
+    /// The stacked residual rows √(h_u h_v) W M c ≈ √(h_u h_v) W f of every patch, with
+    /// W = I (Bernstein coefficients) or W = Q_l ⊗ Q_r (Gauss–Legendre root of the Gram
+    /// matrix): the objective is the squared norm, minimized by QR.
+    fn least_squares_system(&self, method: Method, index: &[usize], nf: usize) -> System {
+        let rows_per = (self.l + 1) * (self.r + 1);
+        let root_weight = (self.su.width() * self.sv.width()).sqrt();
+        let w = match method {
+            Method::IntegralLeastSquares => Some(gram_root(self.l).kron(&gram_root(self.r))),
+            _ => None,
+        };
+        let mut system = System::new(self.patches.len() * rows_per, nf);
+        for (p, patch) in self.patches.iter().enumerate() {
+            let (rows, target) = match &w {
+                Some(w) => (
+                    (w * &patch.map).scaled(root_weight),
+                    (w * &patch.target).scaled(root_weight),
+                ),
+                None => (
+                    patch.map.clone().scaled(root_weight),
+                    patch.target.clone().scaled(root_weight),
+                ),
+            };
+            let base = p * rows_per;
+            let rhs = self.eliminate(patch, &rows, &target, index, |ra, col, v| {
+                system.push(base + ra, col, v);
+            });
+            for (ra, b) in rhs.into_iter().enumerate() {
+                system.rhs[base + ra] = b;
             }
         }
-        (a, b)
+        system
+    }
+
+    /// Σ_patches ∫∫ φ R = 0 for the free test functions φ (Galerkin).
+    fn galerkin_system(&self, index: &[usize], nf: usize) -> System {
+        let (n, m, l, r) = (self.su.degree, self.sv.degree, self.l, self.r);
+        let weight = self.su.width() * self.sv.width();
+        let gram = gram_matrix(n, l).kron(&gram_matrix(m, r));
+        let mut system = System::new(nf, nf);
+        for patch in &self.patches {
+            let (pu, pv) = patch.at;
+            let ext = self.su.pieces[pu].ext.kron(&self.sv.pieces[pv].ext);
+            let tw = (&ext.transpose() * &gram).scaled(weight);
+            let rows = &tw * &patch.map;
+            let target = &tw * &patch.target;
+            let rhs = self.eliminate(patch, &rows, &target, index, |ra, col, v| {
+                let row = index[patch.support[ra]];
+                if row != usize::MAX {
+                    system.push(row, col, v);
+                }
+            });
+            for (ra, b) in rhs.into_iter().enumerate() {
+                let row = index[patch.support[ra]];
+                if row != usize::MAX {
+                    for (acc, x) in system.rhs[row].iter_mut().zip(b) {
+                        *acc += x;
+                    }
+                }
+            }
+        }
+        system
     }
 
     /// R = 0 at the tensor Greville points of the free coefficients.
-    fn collocation_system(
-        &self,
-        index: &[usize],
-        nf: usize,
-    ) -> Result<(DMatrix<f64>, Rhs3), PdeError> {
+    fn collocation_system(&self, index: &[usize], nf: usize) -> System {
         let nv = self.sv.n_coef;
-        let mut a = DMatrix::<f64>::zeros(nf, nf);
-        let mut b = OMatrix::<f64, Dyn, U3>::zeros(nf);
-        let mut row = 0;
-        for (g, &slot) in index.iter().enumerate() {
-            if slot == usize::MAX {
+        let mut system = System::new(nf, nf);
+        for (g, &row) in index.iter().enumerate() {
+            if row == usize::MAX {
                 continue;
             }
             let (i, j) = (g / nv, g % nv);
-            let (u, v) = (self.su.greville[i], self.sv.greville[j]);
-            let (pu, s) = self.su.locate(u);
-            let (pv, t) = self.sv.locate(v);
+            let (pu, s) = self.su.locate(self.su.greville[i]);
+            let (pv, t) = self.sv.locate(self.sv.greville[j]);
             let patch = &self.patches[pu * self.sv.pieces.len() + pv];
             let bu = bernstein_values(self.l, s);
             let bv = bernstein_values(self.r, t);
-            let mut weights = Vec::with_capacity((self.l + 1) * (self.r + 1));
-            for x in &bu {
-                for y in &bv {
-                    weights.push(x * y);
-                }
-            }
-            let w = nalgebra::DVector::from_vec(weights);
-            let lrow = w.transpose() * &patch.map;
-            let mut rhs = w.transpose() * &patch.target;
-            for (c, &gc) in patch.support.iter().enumerate() {
-                match self.fixed[gc] {
-                    Some(p) => rhs -= nalgebra::RowVector3::from(p.to_array()) * lrow[c],
-                    None => a[(row, index[gc])] += lrow[c],
-                }
-            }
-            b.set_row(row, &rhs);
-            row += 1;
-        }
-        if row != nf {
-            return Err(PdeError::SingularSystem {
-                method: "collocation",
-                unknowns: nf,
-                pivot_ratio: 0.0,
+            let w = Dense::from_fn(1, bu.len() * bv.len(), |_, k| {
+                bu[k / bv.len()] * bv[k % bv.len()]
             });
+            let lrow = &w * &patch.map;
+            let target = &w * &patch.target;
+            let rhs = self.eliminate(patch, &lrow, &target, index, |_, col, v| {
+                system.push(row, col, v);
+            });
+            system.rhs[row] = rhs[0];
         }
-        Ok((a, b))
+        system
     }
 
-    fn finish(&self, coefs: &[Vector3], unknowns: usize) -> Result<Solution, PdeError> {
+    fn finish(
+        &self,
+        coefs: &[Vector3],
+        unknowns: usize,
+        condition: f64,
+    ) -> Result<Solution, PdeError> {
         let weight = self.su.width() * self.sv.width();
         let mut objective = 0.0;
         let mut bound: f64 = 0.0;
         let mut surfaces = Vec::with_capacity(self.patches.len());
         let (n, m) = (self.su.degree, self.sv.degree);
         for patch in &self.patches {
-            let local = OMatrix::<f64, Dyn, U3>::from_fn(patch.support.len(), |i, c| {
-                coefs[patch.support[i]][c]
-            });
-            let res = &patch.map * &local - &patch.target;
-            for row in res.row_iter() {
-                let s = row.norm_squared();
+            let local = Dense::from_fn(patch.support.len(), 3, |i, c| coefs[patch.support[i]][c]);
+            let res = &patch.map * &local;
+            for ra in 0..res.nrows() {
+                let s: f64 = (0..3)
+                    .map(|c| (res[(ra, c)] - patch.target[(ra, c)]).powi(2))
+                    .sum();
                 objective += weight * s;
                 bound = bound.max(s.sqrt());
             }
-            let pts = &patch.ext * &local;
-            let points = pts
-                .row_iter()
-                .map(|row| Vector3::new(row[0], row[1], row[2]))
+            let (pu, pv) = patch.at;
+            let ext = self.su.pieces[pu].ext.kron(&self.sv.pieces[pv].ext);
+            let pts = &ext * &local;
+            let points = (0..pts.nrows())
+                .map(|i| Vector3::new(pts[(i, 0)], pts[(i, 1)], pts[(i, 2)]))
                 .collect();
             surfaces.push(BezierSurface::from_flat(n, m, points)?);
+        }
+        // Back to the caller's scale of L and F; saturated at f64::MAX where the product
+        // overflows (coefficients beyond about 1e154 square past the f64 range).
+        let objective = (objective * self.scale * self.scale).min(f64::MAX);
+        let residual_bound = (bound * self.scale).min(f64::MAX);
+        for (what, value) in [("objective", objective), ("residual bound", residual_bound)] {
+            if value.is_nan() {
+                return Err(PdeError::NonFinite { what, value });
+            }
         }
         Ok(Solution {
             spline: self.spline(coefs),
             surface: PatchGrid::new(self.su.pieces.len(), self.sv.pieces.len(), surfaces),
             objective,
-            residual_bound: bound,
+            residual_bound,
             boundary_fit_error: self.fit_error,
             unknowns,
+            condition,
         })
     }
-}
 
-impl Assembly {
-    /// The clamped B-spline form: c_clamped = Z_u c Z_vᵀ (Z the periodic closure, or I).
+    /// The clamped B-spline form: c_clamped = Z_u c Z_vᵀ (Z the sparse periodic closure, or I).
     fn spline(&self, coefs: &[Vector3]) -> BSplineSurface {
-        let (nu, nv) = (self.su.n_coef, self.sv.n_coef);
-        let expand = |space: &Space| -> DMatrix<f64> {
+        let nv = self.sv.n_coef;
+        let expand = |space: &Space| -> Vec<Vec<(usize, f64)>> {
             space
                 .to_clamped
                 .clone()
-                .unwrap_or_else(|| DMatrix::identity(space.n_coef, space.n_coef))
+                .unwrap_or_else(|| (0..space.n_coef).map(|i| vec![(i, 1.0)]).collect())
         };
         let (zu, zv) = (expand(&self.su), expand(&self.sv));
-        let (cu, cv) = (zu.nrows(), zv.nrows());
-        let mut points = vec![Vector3::zeros(); cu * cv];
-        for d in 0..3 {
-            let c = DMatrix::from_fn(nu, nv, |i, j| coefs[i * nv + j][d]);
-            let full = &zu * c * zv.transpose();
-            for i in 0..cu {
-                for j in 0..cv {
-                    points[i * cv + j][d] = full[(i, j)];
+        let mut points = Vec::with_capacity(zu.len() * zv.len());
+        for ru in &zu {
+            for rv in &zv {
+                let mut p = Vector3::zeros();
+                for &(i, wu) in ru {
+                    for &(j, wv) in rv {
+                        p += coefs[i * nv + j] * (wu * wv);
+                    }
                 }
+                points.push(p);
             }
         }
         BSplineSurface {
@@ -483,77 +557,17 @@ pub fn solve(
     Assembly::new(problem, disc)?.solve(method)
 }
 
-/// Cholesky of the Jacobi-scaled normal matrix, with a pivot-ratio check.
-fn solve_spd(
-    a: DMatrix<f64>,
-    b: &OMatrix<f64, Dyn, U3>,
-    method: Method,
-) -> Result<OMatrix<f64, Dyn, U3>, PdeError> {
-    let n = a.nrows();
-    let singular = |ratio: f64| PdeError::SingularSystem {
-        method: method.name(),
-        unknowns: n,
-        pivot_ratio: ratio,
-    };
-    let scale: Vec<f64> = (0..n)
-        .map(|i| {
-            let d = a[(i, i)];
-            if d > 0.0 { 1.0 / d.sqrt() } else { 0.0 }
-        })
-        .collect();
-    if scale.iter().any(|&s| s == 0.0 || !s.is_finite()) {
-        return Err(singular(0.0));
-    }
-    let scaled = DMatrix::from_fn(n, n, |i, j| a[(i, j)] * scale[i] * scale[j]);
-    let chol = scaled.cholesky().ok_or_else(|| singular(0.0))?;
-    let diag = chol.l_dirty().diagonal();
-    let ratio = diag.min() / diag.max();
-    // The scaled matrix has unit diagonal; a pivot below 1e-7 means cond > 1e14.
-    if ratio.is_nan() || ratio <= 1e-7 {
-        return Err(singular(ratio));
-    }
-    let rhs = OMatrix::<f64, Dyn, U3>::from_fn(n, |i, c| b[(i, c)] * scale[i]);
-    let y = chol.solve(&rhs);
-    Ok(OMatrix::<f64, Dyn, U3>::from_fn(n, |i, c| {
-        y[(i, c)] * scale[i]
-    }))
-}
-
-/// LU with partial pivoting, with a pivot-ratio check.
-fn solve_general(
-    a: DMatrix<f64>,
-    b: &OMatrix<f64, Dyn, U3>,
-    method: Method,
-) -> Result<OMatrix<f64, Dyn, U3>, PdeError> {
-    let n = a.nrows();
-    let lu = a.lu();
-    let u = lu.u();
-    let diag = u.diagonal().map(f64::abs);
-    let ratio = diag.min() / diag.max();
-    let singular = PdeError::SingularSystem {
-        method: method.name(),
-        unknowns: n,
-        pivot_ratio: ratio,
-    };
-    if ratio.is_nan() || ratio <= 1e-13 {
-        return Err(singular);
-    }
-    lu.solve(b).ok_or(singular)
-}
-
 /// Bernstein coefficients of F restricted to patch (pu, pv), elevated to (l, r).
 fn rhs_on_patch(
     rhs: Option<&BezierSurface<3>>,
     su: &Space,
     sv: &Space,
-    pu: usize,
-    pv: usize,
-    l: usize,
-    r: usize,
-) -> Result<OMatrix<f64, Dyn, U3>, PdeError> {
+    (pu, pv): (usize, usize),
+    (l, r): (usize, usize),
+) -> Result<Dense, PdeError> {
     let count = (l + 1) * (r + 1);
     let Some(f) = rhs else {
-        return Ok(OMatrix::<f64, Dyn, U3>::zeros(count));
+        return Ok(Dense::zeros(count, 3));
     };
     let restrict_u = |s: &BezierSurface<3>, a: f64, b: f64| -> Result<BezierSurface<3>, PdeError> {
         let s = if b < 1.0 { s.split_u(b)?.0 } else { s.clone() };
@@ -567,9 +581,7 @@ fn rhs_on_patch(
     let s = restrict_u(f, pu as f64 * hu, ((pu + 1) as f64 * hu).min(1.0))?;
     let s = restrict_v(&s, pv as f64 * hv, ((pv + 1) as f64 * hv).min(1.0))?;
     let s = s.elevate_u(l - s.degree_u())?.elevate_v(r - s.degree_v())?;
-    Ok(OMatrix::<f64, Dyn, U3>::from_fn(count, |i, c| {
-        s.points()[i][c]
-    }))
+    Ok(Dense::from_fn(count, 3, |i, c| s.points()[i][c]))
 }
 
 /// The control points fixed by the sides, with corner consistency checked.
@@ -583,7 +595,7 @@ fn fixed_points(problem: &Problem, su: &Space, sv: &Space, half: usize) -> Resul
         let Side::Fixed(curves) = side else { continue };
         let along_u = s >= 2; // v-sides carry curves in u.
         let (along, across) = if along_u { (su, sv) } else { (sv, su) };
-        let at_end = s % 2 == 1;
+        let end = if s % 2 == 1 { End::Finish } else { End::Start };
         let (clamp_a, clamp_b) = if along_u {
             (is_fixed(sides[0]), is_fixed(sides[1]))
         } else {
@@ -602,22 +614,26 @@ fn fixed_points(problem: &Problem, su: &Space, sv: &Space, half: usize) -> Resul
             fitted.push(f.coefs);
         }
         // Σ_l D[i][l] c_l = φ_i for the rows/columns next to the side.
-        let d = across.end_derivatives(at_end, half);
+        let d = across.end_derivatives(end, half);
         let na = across.n_coef;
-        let cols: Vec<usize> = if at_end {
+        let cols: Vec<usize> = if end == End::Finish {
             (na - half..na).collect()
         } else {
             (0..half).collect()
         };
-        let block = DMatrix::from_fn(half, half, |a, b| d[(a, cols[b])]);
-        let lu = block.lu();
+        let block = Dense::from_fn(half, half, |a, b| d[(a, cols[b])]);
+        let rhs = Dense::from_fn(half, 3 * along.n_coef, |i, k| {
+            fitted
+                .get(i)
+                .map_or(0.0, |f: &Vec<Vector3>| f[k / 3][k % 3])
+        });
+        let all = block.solve(&rhs).ok_or(PdeError::Undetermined {
+            method: "boundary rows",
+            unknowns: half,
+            condition: f64::INFINITY,
+        })?;
         for t in 0..along.n_coef {
-            let rhs = DMatrix::from_fn(half, 3, |i, c| fitted.get(i).map_or(0.0, |f| f[t][c]));
-            let sol = lu.solve(&rhs).ok_or(PdeError::SingularSystem {
-                method: "boundary rows",
-                unknowns: half,
-                pivot_ratio: 0.0,
-            })?;
+            let sol = Dense::from_fn(half, 3, |i, c| all[(i, 3 * t + c)]);
             for (a, &row) in cols.iter().enumerate() {
                 let value = Vector3::new(sol[(a, 0)], sol[(a, 1)], sol[(a, 2)]);
                 let (i, j) = if along_u { (t, row) } else { (row, t) };

@@ -8,9 +8,9 @@
 //! by expressing the first r + 1 coefficients through the last r + 1.
 
 use crate::bernstein_ops::bernstein_values;
+use crate::dense::Dense;
 use crate::error::PdeError;
 use bez_core::binomial;
-use nalgebra::DMatrix;
 
 /// The Bézier extraction of one piece: its (n+1) Bernstein coefficients as a linear map
 /// of the spline coefficients in `support`.
@@ -19,7 +19,7 @@ pub(crate) struct Piece {
     /// Indices of the spline coefficients that act on this piece.
     pub(crate) support: Vec<usize>,
     /// (n+1) × support.len() extraction matrix.
-    pub(crate) ext: DMatrix<f64>,
+    pub(crate) ext: Dense,
 }
 
 /// A uniform spline space on [0, 1].
@@ -30,9 +30,10 @@ pub(crate) struct Space {
     pub(crate) n_coef: usize,
     /// The clamped knot vector (interior multiplicity n − r).
     pub(crate) knots: Vec<f64>,
-    /// Clamped B-spline coefficients as a map of the unknowns (None: the identity; periodic
-    /// spaces express their first r + 1 coefficients through the last r + 1).
-    pub(crate) to_clamped: Option<DMatrix<f64>>,
+    /// Clamped B-spline coefficients as a sparse map of the unknowns: entry k lists
+    /// (unknown, weight) pairs (None: the identity; periodic spaces express their first
+    /// r + 1 coefficients through the last r + 1).
+    pub(crate) to_clamped: Option<Vec<Vec<(usize, f64)>>>,
     /// One collocation abscissa per coefficient (Greville abscissae; those of the periodic
     /// knot sequence when periodic).
     pub(crate) greville: Vec<f64>,
@@ -40,6 +41,9 @@ pub(crate) struct Space {
 
 impl Space {
     /// Builds the space of C^r piecewise polynomials of degree n on `pieces` uniform pieces.
+    ///
+    /// The extraction of each piece comes from Boehm insertion on that piece's own 2n + 2
+    /// knots, so building the space costs O(P n³), linear in the number of pieces.
     pub(crate) fn new(
         direction: &'static str,
         degree: usize,
@@ -76,22 +80,18 @@ impl Space {
         let greville: Vec<f64> = (0..n_coef)
             .map(|i| knots[i + 1..=i + n].iter().sum::<f64>() / n as f64)
             .collect();
-        let clamped_knots = knots.clone();
-        // Boehm insertion of every interior knot up to multiplicity n, on the identity.
-        let mut coefs = DMatrix::<f64>::identity(n_coef, n_coef);
-        for p in 1..pieces {
-            let x = p as f64 / pieces as f64;
-            for _ in mult..n {
-                (knots, coefs) = insert_knot(&knots, &coefs, n, x);
-            }
-        }
-        let mut out = Vec::with_capacity(pieces);
-        for p in 0..pieces {
-            let rows = coefs.rows(p * n, n + 1).into_owned();
-            out.push(local_piece(&rows));
-        }
+        let out = (0..pieces)
+            .map(|p| {
+                // Span k = [knots[k], knots[k+1]) carries B-splines k − n ..= k.
+                let k = n + p * mult;
+                Piece {
+                    support: (k - n..=k).collect(),
+                    ext: local_extraction(&knots[k - n..=k + n + 1], n),
+                }
+            })
+            .collect();
         let mut space = Self {
-            knots: clamped_knots,
+            knots,
             to_clamped: None,
             degree: n,
             pieces: out,
@@ -128,23 +128,22 @@ impl Space {
         (&piece.support, vals)
     }
 
-    /// Derivatives of orders 0..count at the start (`at_end = false`) or the end of [0, 1]:
+    /// Derivatives of orders 0..count at the start (`End::Start`) or the end of [0, 1]:
     /// a count × n_coef matrix D with D[d][l] = N_l^(d)(end).
-    pub(crate) fn end_derivatives(&self, at_end: bool, count: usize) -> DMatrix<f64> {
+    pub(crate) fn end_derivatives(&self, end: End, count: usize) -> Dense {
         let n = self.degree;
-        let piece = if at_end {
-            &self.pieces[self.pieces.len() - 1]
-        } else {
-            &self.pieces[0]
+        let piece = match end {
+            End::Finish => &self.pieces[self.pieces.len() - 1],
+            End::Start => &self.pieces[0],
         };
         let h = self.width();
-        let mut d = DMatrix::<f64>::zeros(count, self.n_coef);
+        let mut d = Dense::zeros(count, self.n_coef);
         for order in 0..count.min(n + 1) {
             // d-th derivative of a Bézier piece at an end, in the global parameter:
             // n!/(n−d)! h^{−d} Σ_l (−1)^{d−l} C(d,l) b_{start+l}.
             let falling: f64 = (0..order).map(|i| (n - i) as f64).product();
             let scale = falling / h.powi(order as i32);
-            let start = if at_end { n - order } else { 0 };
+            let start = if end == End::Finish { n - order } else { 0 };
             for l in 0..=order {
                 let sign = if (order - l) % 2 == 0 { 1.0 } else { -1.0 };
                 let w = scale * sign * binomial(order, l);
@@ -169,34 +168,47 @@ impl Space {
                 why: "a periodic closure with C^r at the seam needs 2(r + 1) coefficients",
             });
         }
-        let d0 = self.end_derivatives(false, r1).columns(0, r1).into_owned();
-        let d1 = self
-            .end_derivatives(true, r1)
-            .columns(n - r1, r1)
-            .into_owned();
-        let t = d0.lu().solve(&d1).ok_or(PdeError::SingularSystem {
+        let d0 = self.end_derivatives(End::Start, r1);
+        let d1 = self.end_derivatives(End::Finish, r1);
+        let d0 = Dense::from_fn(r1, r1, |i, j| d0[(i, j)]);
+        let d1 = Dense::from_fn(r1, r1, |i, j| d1[(i, n - r1 + j)]);
+        let t = d0.solve(&d1).ok_or(PdeError::Undetermined {
             method: "periodic closure",
             unknowns: r1,
-            pivot_ratio: 0.0,
+            condition: f64::INFINITY,
         })?;
         // c = Z w with w = (c_{r+1}, …, c_{n−1}).
         let nw = n - r1;
-        let mut z = DMatrix::<f64>::zeros(n, nw);
-        for i in 0..nw {
-            z[(r1 + i, i)] = 1.0;
-        }
-        for i in 0..r1 {
-            for j in 0..r1 {
-                z[(i, nw - r1 + j)] = t[(i, j)];
-            }
-        }
+        let z: Vec<Vec<(usize, f64)>> = (0..n)
+            .map(|k| {
+                if k < r1 {
+                    (0..r1).map(|j| (nw - r1 + j, t[(k, j)])).collect()
+                } else {
+                    vec![(k - r1, 1.0)]
+                }
+            })
+            .collect();
         let pieces = self
             .pieces
             .iter()
             .map(|piece| {
-                let sub =
-                    DMatrix::from_fn(piece.support.len(), nw, |a, b| z[(piece.support[a], b)]);
-                local_piece(&(&piece.ext * sub))
+                let mut support: Vec<usize> = piece
+                    .support
+                    .iter()
+                    .flat_map(|&g| z[g].iter().map(|&(w, _)| w))
+                    .collect();
+                support.sort_unstable();
+                support.dedup();
+                let mut ext = Dense::zeros(piece.ext.nrows(), support.len());
+                for (a, &g) in piece.support.iter().enumerate() {
+                    for &(w, weight) in &z[g] {
+                        let col = support.partition_point(|&s| s < w);
+                        for i in 0..piece.ext.nrows() {
+                            ext[(i, col)] += piece.ext[(i, a)] * weight;
+                        }
+                    }
+                }
+                Piece { support, ext }
             })
             .collect();
         // Clamped Greville abscissae cluster at the seam: use those of the periodic knot
@@ -220,31 +232,52 @@ impl Space {
     }
 }
 
-/// Keeps the nonzero columns of a full extraction block.
-fn local_piece(rows: &DMatrix<f64>) -> Piece {
-    let support: Vec<usize> = (0..rows.ncols())
-        .filter(|&c| rows.column(c).iter().any(|&x| x != 0.0))
-        .collect();
-    let ext = DMatrix::from_fn(rows.nrows(), support.len(), |i, c| rows[(i, support[c])]);
-    Piece { support, ext }
+/// Which end of [0, 1].
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub(crate) enum End {
+    /// t = 0.
+    Start,
+    /// t = 1.
+    Finish,
 }
 
-/// Boehm's knot insertion of x, applied to the rows of a coefficient matrix.
-fn insert_knot(knots: &[f64], coefs: &DMatrix<f64>, n: usize, x: f64) -> (Vec<f64>, DMatrix<f64>) {
+/// Bézier extraction of the span [t_n, t_{n+1}] of a local knot vector t_0..t_{2n+1}: the
+/// Bernstein coefficients of the n + 1 B-splines acting there, as an (n+1) × (n+1) matrix.
+///
+/// Boehm insertion raises both span ends to multiplicity n on the identity; the rows of the
+/// B-splines acting on the span are then the Bernstein coefficients.
+fn local_extraction(local: &[f64], n: usize) -> Dense {
+    let (a, b) = (local[n], local[n + 1]);
+    let mut knots = local.to_vec();
+    let mut coefs = Dense::identity(n + 1);
+    for x in [a, b] {
+        while knots.iter().filter(|&&u| u == x).count() < n {
+            (knots, coefs) = insert_knot(&knots, &coefs, n, x);
+        }
+    }
+    // The span [a, b] is now [knots[k], knots[k+1]] with k the last index of a.
+    let k = knots.iter().rposition(|&u| u == a).unwrap_or(n);
+    coefs.rows_range(k - n, n + 1)
+}
+
+/// Boehm's knot insertion of x, applied to the rows of a coefficient matrix (row i holds
+/// the coefficients of B-spline i of `knots`).
+fn insert_knot(knots: &[f64], coefs: &Dense, n: usize, x: f64) -> (Vec<f64>, Dense) {
     // k: last index with knots[k] ≤ x; s: multiplicity of x already present.
     let k = knots.iter().rposition(|&u| u <= x).unwrap_or(0);
     let s = knots.iter().filter(|&&u| u == x).count();
     let rows = coefs.nrows();
-    let mut out = DMatrix::<f64>::zeros(rows + 1, coefs.ncols());
+    let mut out = Dense::zeros(rows + 1, coefs.ncols());
     for i in 0..=rows {
-        if i + n <= k {
-            out.set_row(i, &coefs.row(i));
-        } else if i + s > k {
-            out.set_row(i, &coefs.row(i - 1));
-        } else {
-            let alpha = (x - knots[i]) / (knots[i + n] - knots[i]);
-            let row = coefs.row(i) * alpha + coefs.row(i - 1) * (1.0 - alpha);
-            out.set_row(i, &row);
+        for c in 0..coefs.ncols() {
+            out[(i, c)] = if i + n <= k {
+                coefs[(i, c)]
+            } else if i + s > k {
+                coefs[(i - 1, c)]
+            } else {
+                let alpha = (x - knots[i]) / (knots[i + n] - knots[i]);
+                alpha * coefs[(i, c)] + (1.0 - alpha) * coefs[(i - 1, c)]
+            };
         }
     }
     let mut new_knots = knots.to_vec();
@@ -329,8 +362,8 @@ mod tests {
         let s = Space::new("v", 5, 4, 3, true).unwrap();
         assert_eq!(s.n_coef, 6 + 3 * 2 - 4);
         let c: Vec<f64> = (0..s.n_coef).map(|i| (i as f64 * 1.3).sin()).collect();
-        let d0 = s.end_derivatives(false, 4);
-        let d1 = s.end_derivatives(true, 4);
+        let d0 = s.end_derivatives(End::Start, 4);
+        let d1 = s.end_derivatives(End::Finish, 4);
         for d in 0..4 {
             let a: f64 = (0..s.n_coef).map(|i| d0[(d, i)] * c[i]).sum();
             let b: f64 = (0..s.n_coef).map(|i| d1[(d, i)] * c[i]).sum();

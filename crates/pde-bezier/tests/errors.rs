@@ -115,7 +115,7 @@ fn low_continuity_is_rejected() {
 }
 
 #[test]
-fn underdetermined_problem_is_singular() {
+fn underdetermined_problem_is_reported_as_undetermined() {
     // Only u = 0 fixed, everything else free: Laplace's residual vanishes on many surfaces.
     let mut p = unit_square_problem();
     p.u1 = Side::Free;
@@ -124,7 +124,7 @@ fn underdetermined_problem_is_singular() {
     for method in Method::ALL {
         let err = solve(&p, &Discretization::single(4, 4), method).unwrap_err();
         assert!(
-            matches!(err, PdeError::SingularSystem { .. }),
+            matches!(err, PdeError::Undetermined { .. }),
             "{method:?}: {err}"
         );
     }
@@ -220,4 +220,110 @@ fn grid_eval_rejects_out_of_range() {
         Err(PdeError::ParameterOutOfRange { .. })
     ));
     assert!(sol.surface.patch(1, 0).is_none());
+}
+
+#[test]
+fn non_elliptic_operators_are_refused_before_solving() {
+    let mut p = unit_square_problem();
+    for op in [
+        Operator::second_order(1.0, -1.0).unwrap(),
+        Operator::new(vec![Term {
+            coeff: 1.0,
+            du: 1,
+            dv: 1,
+        }])
+        .unwrap(),
+    ] {
+        p.operator = op;
+        for method in Method::ALL {
+            let err = solve(&p, &Discretization::single(4, 4), method).unwrap_err();
+            assert!(matches!(err, PdeError::NotElliptic { .. }), "{err}");
+        }
+    }
+}
+
+#[test]
+fn sizes_over_the_limits_are_refused_before_allocating() {
+    let p = unit_square_problem();
+    let huge_degree = Discretization::single(1 << 40, 1 << 40);
+    let err = solve(&p, &huge_degree, Method::Galerkin).unwrap_err();
+    assert_eq!(
+        err,
+        PdeError::TooLarge {
+            what: "degree in u",
+            value: 1 << 40,
+            limit: pde_bezier::MAX_SOLVE_DEGREE
+        }
+    );
+    let huge_grid = Discretization {
+        patches_u: 1_000_000_000,
+        patches_v: 1_000_000_000,
+        smoothness_u: 1,
+        smoothness_v: 1,
+        ..Discretization::single(3, 3)
+    };
+    let err = solve(&p, &huge_grid, Method::Galerkin).unwrap_err();
+    assert!(
+        matches!(
+            err,
+            PdeError::TooLarge {
+                what: "the number of patches",
+                ..
+            }
+        ),
+        "{err}"
+    );
+    let long_strip = Discretization {
+        patches_u: 1,
+        patches_v: 1 << 15,
+        smoothness_v: 1,
+        ..Discretization::single(5, 5)
+    };
+    let err = solve(&p, &long_strip, Method::Galerkin).unwrap_err();
+    assert!(matches!(err, PdeError::TooLarge { .. }), "{err}");
+}
+
+#[test]
+fn operator_scale_does_not_change_the_solution() {
+    // L = c(∂uu + 2∂vv) for c = 1, 1e300, 1e-300: the same surface, no "undetermined".
+    let base = unit_square_problem();
+    let reference = solve(&base, &Discretization::single(4, 4), Method::Galerkin).unwrap();
+    for c in [1e300, 1e-300] {
+        let mut p = base.clone();
+        p.operator = Operator::second_order(c, 2.0 * c).unwrap();
+        for method in Method::ALL {
+            let sol = solve(&p, &Discretization::single(4, 4), method).unwrap();
+            for (a, b) in sol.surface.patches()[0]
+                .points()
+                .iter()
+                .zip(reference.surface.patches()[0].points())
+            {
+                assert!((*a - *b).norm() < 1e-12, "{c} {method:?}");
+            }
+            assert!(sol.objective.is_finite() && sol.condition.is_finite());
+        }
+    }
+}
+
+#[test]
+fn high_degree_bezier_side_data_is_converted_exactly_or_named_too_large() {
+    // A degree-20 Bézier side of a planar patch: converted exactly by blossoming.
+    let mut p = unit_square_problem();
+    let pts: Vec<Vector3> = (0..=20)
+        .map(|i| Vector3::new(0.0, i as f64 / 20.0, 0.0))
+        .collect();
+    p.u0 = Side::Fixed(vec![SideCurve::Bezier(BezierCurve::new(pts).unwrap())]);
+    let sol = solve(&p, &Discretization::single(20, 20), Method::Collocation);
+    match sol {
+        Ok(sol) => assert!(sol.boundary_fit_error < 1e-14, "{}", sol.boundary_fit_error),
+        Err(e) => assert!(matches!(e, PdeError::IllConditioned { .. }), "{e}"),
+    }
+    // Degree 40 asks for degree 40 patches: over the limit, and the error says so.
+    let pts: Vec<Vector3> = (0..=40)
+        .map(|i| Vector3::new(0.0, i as f64 / 40.0, 0.0))
+        .collect();
+    p.u0 = Side::Fixed(vec![SideCurve::Bezier(BezierCurve::new(pts).unwrap())]);
+    let (n, m) = p.default_degrees();
+    let err = solve(&p, &Discretization::single(n, m), Method::Galerkin).unwrap_err();
+    assert!(matches!(err, PdeError::TooLarge { value: 40, .. }), "{err}");
 }

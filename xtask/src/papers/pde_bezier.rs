@@ -272,6 +272,7 @@ pub(crate) fn tables() -> Result<Vec<Table>, DynError> {
         error_table(&rows, true),
         error_table(&rows, false),
         convergence_table()?,
+        super::pde_bezier_scale::scale_table()?,
     ])
 }
 

@@ -173,7 +173,7 @@ impl Assembly {
                 periodic_v,
             ),
         ] {
-            if (patches > 1 || periodic) && smooth + 1 < k {
+            if (patches > 1 || periodic) && smooth.saturating_add(1) < k {
                 return Err(PdeError::Smoothness {
                     direction: dir,
                     smoothness: smooth,

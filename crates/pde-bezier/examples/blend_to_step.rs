@@ -35,20 +35,20 @@ fn circle(radius: f64, height: f64, v: f64, d: usize) -> Vector3 {
 }
 
 /// Position and cross-boundary derivative ∂X/∂u = (0, 0, 2) of one end of the blend.
-fn end(radius: f64, height: f64) -> Side {
-    let position = SideCurve::from_function(65, 2, move |v, d| circle(radius, height, v, d));
+fn end(radius: f64, height: f64) -> Result<Side, PdeError> {
+    let position = SideCurve::from_function(65, 2, move |v, d| circle(radius, height, v, d))?;
     let lift = SideCurve::from_function(65, 2, |_, d| {
         Vector3::new(0.0, 0.0, if d == 0 { 2.0 } else { 0.0 })
-    });
-    Side::Fixed(vec![position, lift])
+    })?;
+    Ok(Side::Fixed(vec![position, lift]))
 }
 
 fn run(out: Option<&str>) -> Result<(), PdeError> {
     let problem = Problem {
         operator: Operator::bloor_wilson(0.15)?,
         rhs: None,
-        u0: end(1.0, 0.0),
-        u1: end(0.5, 1.0),
+        u0: end(1.0, 0.0)?,
+        u1: end(0.5, 1.0)?,
         v0: Side::Periodic,
         v1: Side::Periodic,
     };

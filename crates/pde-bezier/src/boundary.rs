@@ -278,7 +278,7 @@ mod tests {
                 _ => Vector3::new(6.0 * t, 0.0, -2.0),
             }
         };
-        let curve = SideCurve::from_function(101, 3, f);
+        let curve = SideCurve::from_function(101, 3, f).unwrap();
         let fitted = fit("v=0", &curve, &space, 2, 3).unwrap();
         assert!(fitted.error < 1e-13, "{}", fitted.error);
         // A non-polynomial function: the clamped ends still interpolate value and slope.
@@ -290,7 +290,7 @@ mod tests {
             };
             Vector3::new(s, 0.0, 0.0)
         };
-        let curve = SideCurve::from_function(101, 2, g);
+        let curve = SideCurve::from_function(101, 2, g).unwrap();
         let fitted = fit("v=0", &curve, &space, 2, 2).unwrap();
         assert!(
             fitted.error > 1e-9 && fitted.error < 1e-3,

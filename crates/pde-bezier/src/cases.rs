@@ -195,8 +195,16 @@ fn cylinder_plane_coefficients() -> CylinderPlaneCoefficients {
     }
 }
 
+/// `SIDE_SAMPLES` uniform samples of f with its values at both ends (a jet of length 1).
 fn sampled(f: impl Fn(f64) -> Vector3) -> SideCurve {
-    SideCurve::from_function(SIDE_SAMPLES, 1, |t, _| f(t))
+    let values = (0..SIDE_SAMPLES)
+        .map(|i| f(i as f64 / (SIDE_SAMPLES - 1) as f64))
+        .collect();
+    SideCurve::Sampled {
+        values,
+        start_jet: vec![f(0.0)],
+        end_jet: vec![f(1.0)],
+    }
 }
 
 /// Dirichlet data of `exact` on the u-sides and, unless `periodic`, on the v-sides;

@@ -7,11 +7,61 @@ use bez_core::{BezierSurface, Vector3};
 /// [i/P_u, (i+1)/P_u] × [j/P_v, (j+1)/P_v]; stored row-major (i outer).
 #[derive(Debug, Clone, PartialEq)]
 #[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
+#[cfg_attr(feature = "serde", serde(try_from = "PatchGridParts"))]
 pub struct PatchGrid {
     patches_u: usize,
     patches_v: usize,
     patches: Vec<BezierSurface<3>>,
 }
+
+/// The serialized form of a [`PatchGrid`], checked on the way in: P_u, P_v ≥ 1, P_u P_v
+/// patches, all of one bidegree.
+#[cfg(feature = "serde")]
+#[derive(serde::Deserialize)]
+struct PatchGridParts {
+    patches_u: usize,
+    patches_v: usize,
+    patches: Vec<BezierSurface<3>>,
+}
+
+#[cfg(feature = "serde")]
+impl TryFrom<PatchGridParts> for PatchGrid {
+    type Error = PdeError;
+    fn try_from(raw: PatchGridParts) -> Result<Self, PdeError> {
+        if raw.patches_u == 0 || raw.patches_v == 0 {
+            return Err(PdeError::NoPatches {
+                patches_u: raw.patches_u,
+                patches_v: raw.patches_v,
+            });
+        }
+        let expected = raw.patches_u.saturating_mul(raw.patches_v);
+        if raw.patches.len() != expected {
+            return Err(PdeError::PieceCount {
+                side: "grid",
+                given: raw.patches.len(),
+                expected,
+            });
+        }
+        let first = (raw.patches[0].degree_u(), raw.patches[0].degree_v());
+        if raw
+            .patches
+            .iter()
+            .any(|p| (p.degree_u(), p.degree_v()) != first)
+        {
+            return Err(PdeError::InvalidSpline {
+                what: "the patches of a grid must share one bidegree".to_string(),
+            });
+        }
+        Ok(Self {
+            patches_u: raw.patches_u,
+            patches_v: raw.patches_v,
+            patches: raw.patches,
+        })
+    }
+}
+
+/// The largest τ of [`PatchGrid::error_norms`] ((τ + 1)² evaluations).
+pub const MAX_ERROR_GRID: usize = 4096;
 
 /// RMS and maximum of |X − X̃| over a (τ+1) × (τ+1) grid (Xu & Wang, Sec. 4).
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -80,12 +130,20 @@ impl PatchGrid {
     /// PdeError norms against an exact solution on the (τ+1)² grid (the paper uses τ = 100).
     ///
     /// # Errors
-    /// [`PdeError::NonFinite`] when the exact solution returns a non-finite value.
+    /// [`PdeError::NonFinite`] when the exact solution returns a non-finite value or the
+    /// error overflows, [`PdeError::TooLarge`] for τ above [`MAX_ERROR_GRID`].
     pub fn error_norms(
         &self,
         exact: impl Fn(f64, f64) -> Vector3,
         tau: usize,
     ) -> Result<ErrorNorms, PdeError> {
+        if tau > MAX_ERROR_GRID {
+            return Err(PdeError::TooLarge {
+                what: "error grid τ",
+                value: tau,
+                limit: MAX_ERROR_GRID,
+            });
+        }
         let tau = tau.max(1);
         let mut sum = 0.0;
         let mut max: f64 = 0.0;

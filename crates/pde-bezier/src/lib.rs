@@ -60,16 +60,16 @@ mod spline_surface;
 mod step;
 mod symbol;
 
-pub use error::PdeError;
-pub use grid::{ErrorNorms, PatchGrid};
-pub use iges::{read_iges, write_iges};
-pub use limits::{MAX_COEFFICIENTS, MAX_LOCAL_ENTRIES, MAX_PATCHES, MAX_SOLVE_DEGREE};
-pub use manufactured::{apply_operator, side_of};
-pub use problem::{Discretization, Operator, Problem, Side, SideCurve, Term};
-pub use solve::{Assembly, Method, Solution, solve};
-pub use sparse::CONDITION_LIMIT;
-pub use spline_surface::BSplineSurface;
-pub use step::{read_step, write_step};
+pub use crate::error::PdeError;
+pub use crate::grid::{ErrorNorms, MAX_ERROR_GRID, PatchGrid};
+pub use crate::iges::{read_iges, write_iges};
+pub use crate::limits::{MAX_COEFFICIENTS, MAX_LOCAL_ENTRIES, MAX_PATCHES, MAX_SOLVE_DEGREE};
+pub use crate::manufactured::{apply_operator, side_of};
+pub use crate::problem::{Discretization, MAX_JET, Operator, Problem, Side, SideCurve, Term};
+pub use crate::solve::{Assembly, Method, Solution, solve};
+pub use crate::sparse::CONDITION_LIMIT;
+pub use crate::spline_surface::BSplineSurface;
+pub use crate::step::{read_step, write_step};
 
 /// The README's example, compiled and run with the doctests.
 #[cfg(doctest)]

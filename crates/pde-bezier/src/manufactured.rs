@@ -37,8 +37,14 @@ pub fn apply_operator(op: &Operator, x: &BezierSurface<3>) -> Result<BezierSurfa
 /// `side` is 0..4 for u=0, u=1, v=0, v=1.
 ///
 /// # Errors
-/// Kernel errors only.
+/// [`PdeError::TooLarge`] for more than 3 curves (operators have order at most 6) or a side
+/// index above 3; kernel errors.
 pub fn side_of(x: &BezierSurface<3>, side: usize, count: usize) -> Result<Side, PdeError> {
+    for (what, value, limit) in [("side curve count", count, 3), ("side index", side, 3)] {
+        if value > limit {
+            return Err(PdeError::TooLarge { what, value, limit });
+        }
+    }
     let t = if side % 2 == 1 { 1.0 } else { 0.0 };
     let curves = (0..count)
         .map(|i| {

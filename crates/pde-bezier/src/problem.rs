@@ -21,8 +21,24 @@ pub struct Term {
 /// must have an even total order 2, 4 or 6. The PDE order k is the largest total order.
 #[derive(Debug, Clone, PartialEq)]
 #[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
+#[cfg_attr(feature = "serde", serde(try_from = "OperatorTerms"))]
 pub struct Operator {
     terms: Vec<Term>,
+}
+
+/// The serialized form of an [`Operator`], validated by [`Operator::new`] on the way in.
+#[cfg(feature = "serde")]
+#[derive(serde::Deserialize)]
+struct OperatorTerms {
+    terms: Vec<Term>,
+}
+
+#[cfg(feature = "serde")]
+impl TryFrom<OperatorTerms> for Operator {
+    type Error = PdeError;
+    fn try_from(raw: OperatorTerms) -> Result<Self, PdeError> {
+        Self::new(raw.terms)
+    }
 }
 
 impl Operator {
@@ -111,6 +127,9 @@ impl Operator {
     }
 }
 
+/// The longest end jet [`SideCurve::from_function`] records (orders 0..16).
+pub const MAX_JET: usize = 16;
+
 /// A boundary curve: a function of the side's parameter t ∈ [0, 1].
 #[derive(Debug, Clone, PartialEq)]
 #[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
@@ -135,16 +154,32 @@ impl SideCurve {
     /// Samples a function given with its derivatives: `f(t, d)` is the d-th derivative at t.
     ///
     /// `jet` derivative orders 0..jet are recorded at both ends for clamping.
-    pub fn from_function(count: usize, jet: usize, f: impl Fn(f64, usize) -> Vector3) -> Self {
+    ///
+    /// # Errors
+    /// [`PdeError::TooLarge`] for more than `bez_core::MAX_SAMPLES` samples or a jet longer
+    /// than [`MAX_JET`] (checked before `f` is called).
+    pub fn from_function(
+        count: usize,
+        jet: usize,
+        f: impl Fn(f64, usize) -> Vector3,
+    ) -> Result<Self, PdeError> {
+        for (what, value, limit) in [
+            ("sample count", count, bez_core::MAX_SAMPLES),
+            ("jet length", jet, MAX_JET),
+        ] {
+            if value > limit {
+                return Err(PdeError::TooLarge { what, value, limit });
+            }
+        }
         let count = count.max(2);
         let values = (0..count)
             .map(|i| f(i as f64 / (count - 1) as f64, 0))
             .collect();
-        Self::Sampled {
+        Ok(Self::Sampled {
             values,
             start_jet: (0..jet).map(|d| f(0.0, d)).collect(),
             end_jet: (0..jet).map(|d| f(1.0, d)).collect(),
-        }
+        })
     }
 
     /// Degree of the curve (for [`Problem::default_degrees`]); sampled data has none.

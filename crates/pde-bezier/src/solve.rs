@@ -102,6 +102,9 @@ pub struct Assembly {
     k: usize,
     /// The operator and F were divided by this (the largest |coefficient|).
     scale: f64,
+    /// Every direction is periodic or has both sides fixed: the boundary data determines
+    /// the solution, so a numerically singular system is ill-conditioned, not undetermined.
+    determined: bool,
 }
 
 #[derive(Debug, Clone)]
@@ -173,7 +176,7 @@ impl Assembly {
                 periodic_v,
             ),
         ] {
-            if (patches > 1 || periodic) && smooth + 1 < k {
+            if (patches > 1 || periodic) && smooth.saturating_add(1) < k {
                 return Err(PdeError::Smoothness {
                     direction: dir,
                     smoothness: smooth,
@@ -279,6 +282,9 @@ impl Assembly {
                 });
             }
         }
+        let both_fixed = |a: &Side, b: &Side| matches!((a, b), (Side::Fixed(_), Side::Fixed(_)));
+        let determined = (periodic_u || both_fixed(&problem.u0, &problem.u1))
+            && (periodic_v || both_fixed(&problem.v0, &problem.v1));
         Ok(Self {
             su,
             sv,
@@ -289,6 +295,7 @@ impl Assembly {
             fit_error,
             k,
             scale,
+            determined,
         })
     }
 
@@ -307,7 +314,9 @@ impl Assembly {
     /// Solves for the free control points with `method` (three right-hand sides x, y, z).
     ///
     /// # Errors
-    /// [`PdeError::Undetermined`] when the boundary data leaves the system rank deficient,
+    /// [`PdeError::Undetermined`] when the boundary data leaves the system rank deficient
+    /// (a direction that is neither periodic nor fixed on both sides, or an exactly singular
+    /// system); a numerically singular system under such data is [`PdeError::IllConditioned`];
     /// [`PdeError::IllConditioned`] when its condition estimate is above
     /// [`crate::CONDITION_LIMIT`].
     pub fn solve(&self, method: Method) -> Result<Solution, PdeError> {
@@ -332,7 +341,22 @@ impl Assembly {
                     Kind::LeastSquares,
                 ),
             };
-            let solved = system.solve(kind, method.name())?;
+            let solved = match system.solve(kind, method.name()) {
+                // Well-posed boundary data: a finite but huge estimate is conditioning.
+                Err(PdeError::Undetermined {
+                    method,
+                    unknowns,
+                    condition,
+                }) if self.determined && condition.is_finite() => {
+                    return Err(PdeError::IllConditioned {
+                        method,
+                        unknowns,
+                        condition,
+                        limit: crate::CONDITION_LIMIT,
+                    });
+                }
+                other => other?,
+            };
             condition = solved.condition;
             for (k, &g) in free.iter().enumerate() {
                 let [x, y, z] = solved.x[k];

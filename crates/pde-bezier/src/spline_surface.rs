@@ -105,11 +105,13 @@ impl BSplineSurface {
         Ok(())
     }
 
-    /// Evaluates the surface at (u, v) ∈ [0, 1]² by the Cox–de Boor recurrence.
+    /// Evaluates the surface at (u, v) ∈ [0, 1]² by the Cox–de Boor recurrence, after
+    /// [`Self::validate`] (the fields are public, so the shape is checked on every call).
     ///
     /// # Errors
-    /// [`PdeError::ParameterOutOfRange`] outside the knot range.
+    /// Those of [`Self::validate`]; [`PdeError::ParameterOutOfRange`] outside the knot range.
     pub fn eval(&self, u: f64, v: f64) -> Result<Vector3, PdeError> {
+        self.validate()?;
         let (iu, bu) = basis(&self.knots_u, self.degree_u, u)?;
         let (iv, bv) = basis(&self.knots_v, self.degree_v, v)?;
         let cv = self.count_v();

@@ -327,3 +327,27 @@ fn high_degree_bezier_side_data_is_converted_exactly_or_named_too_large() {
     let err = solve(&p, &Discretization::single(n, m), Method::Galerkin).unwrap_err();
     assert!(matches!(err, PdeError::TooLarge { value: 40, .. }), "{err}");
 }
+
+#[test]
+fn high_degree_dirichlet_problem_is_ill_conditioned_not_undetermined() {
+    // One patch of degree 20, all four sides fixed: well posed. Σb² and ∫∫R² (QR, Gauss–
+    // Legendre root of the Gram matrix) solve it; the Bernstein-basis Galerkin matrix is
+    // numerically singular, which is conditioning, not missing boundary data.
+    let p = unit_square_problem();
+    let disc = Discretization::single(20, 20);
+    for method in [Method::BernsteinLeastSquares, Method::IntegralLeastSquares] {
+        let sol = solve(&p, &disc, method).unwrap();
+        let err = sol
+            .surface
+            .error_norms(|u, v| Vector3::new(u, v, 0.0), 10)
+            .unwrap();
+        assert!(err.max < 1e-9, "{method:?}: {}", err.max);
+        assert!(sol.condition > 1.0 && sol.condition < 1e13);
+    }
+    match solve(&p, &disc, Method::Galerkin) {
+        Err(PdeError::IllConditioned {
+            condition, limit, ..
+        }) => assert!(condition > limit, "{condition}"),
+        other => panic!("{other:?}"),
+    }
+}

@@ -255,11 +255,56 @@ fn convergence_table() -> Result<Table, DynError> {
         );
         checked.push(json!({"table": "vase", "patches_v": p, "rms": e.rms, "max": e.max, "fit": sol.boundary_fit_error}));
     }
+    fourth_order_rows(&mut md, &mut checked)?;
     Ok(Table {
         name: "pde-bezier-convergence".to_string(),
         markdown: md,
         checked: Value::Array(checked),
     })
+}
+
+/// Fourth-order convergence on the Fig. 4 blend ((∂uu + ∂φφ)², exact solution known):
+/// h-refinement P x 4P and p-refinement of the degree on the 4 x 16 grid, C⁴ joins.
+fn fourth_order_rows(md: &mut String, checked: &mut Vec<Value>) -> Result<(), DynError> {
+    let _ = writeln!(
+        md,
+        "\nFourth order, h-refinement: Fig. 4 blend, P x 4P bi-quintic C⁴ patches (orders = log₂ of the ratio to the previous row):\n"
+    );
+    let _ = writeln!(
+        md,
+        "| P | unknowns | collocation | Galerkin | Σb² (4) | ∫∫R² | order of Galerkin | order of Σb² |"
+    );
+    let _ = writeln!(md, "|---|---|---|---|---|---|---|---|");
+    let mut prev: Option<(f64, f64)> = None;
+    for p in [4, 8, 16] {
+        let case = cases::cylinder_plane(p, 4 * p)?;
+        let (unknowns, vals) = max_errors(&case)?;
+        let (g, b) = (vals[1], vals[2]);
+        let orders = prev.map_or("– | –".to_string(), |(g0, b0)| {
+            format!("{:.2} | {:.2}", (g0 / g).log2(), (b0 / b).log2())
+        });
+        prev = Some((g, b));
+        let _ = writeln!(md, "| {p} | {unknowns} |{} {orders} |", cells(&vals));
+        checked.push(json!({"table": "fourth_h", "patches": p, "max": vals}));
+    }
+    let _ = writeln!(
+        md,
+        "\nFourth order, p-refinement: Fig. 4 blend, 4 x 16 patches of bidegree (n, n), C⁴:\n"
+    );
+    let _ = writeln!(
+        md,
+        "| n | unknowns | collocation | Galerkin | Σb² (4) | ∫∫R² |"
+    );
+    let _ = writeln!(md, "|---|---|---|---|---|---|");
+    for n in [5, 6, 7, 8] {
+        let mut case = cases::cylinder_plane(4, 16)?;
+        case.disc.degree_u = n;
+        case.disc.degree_v = n;
+        let (unknowns, vals) = max_errors(&case)?;
+        let _ = writeln!(md, "| {n} | {unknowns} |{}", cells(&vals));
+        checked.push(json!({"table": "fourth_p", "n": n, "max": vals}));
+    }
+    Ok(())
 }
 
 /// Tables 1 and 2 (all examples, four methods) and the convergence table.

@@ -206,6 +206,14 @@ pub enum PdeError {
         /// What is wrong.
         what: String,
     },
+    /// A deserialized solution holds a measure that no solve gives.
+    #[error("solution: the {what} is {value}; it must be finite and non-negative")]
+    InvalidSolution {
+        /// Which measure.
+        what: &'static str,
+        /// The offending value.
+        value: f64,
+    },
     /// An evaluation parameter is outside [0, 1].
     #[error("grid parameter {value} is outside [0, 1]")]
     ParameterOutOfRange {

@@ -63,6 +63,7 @@ impl Method {
 /// The result of a solve.
 #[derive(Debug, Clone, PartialEq)]
 #[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
+#[cfg_attr(feature = "serde", serde(try_from = "SolutionParts"))]
 #[non_exhaustive]
 pub struct Solution {
     /// The approximating surface.
@@ -82,6 +83,48 @@ pub struct Solution {
     pub condition: f64,
     /// The same surface as one clamped B-spline surface (C^r joins as knot multiplicities).
     pub spline: BSplineSurface,
+}
+
+/// The serialized form of a [`Solution`], checked on the way in: the measures finite and
+/// non-negative, the surface a valid grid (checked by its own deserialization) and the spline
+/// valid.
+#[cfg(feature = "serde")]
+#[derive(serde::Deserialize)]
+struct SolutionParts {
+    surface: PatchGrid,
+    objective: f64,
+    residual_bound: f64,
+    boundary_fit_error: f64,
+    unknowns: usize,
+    condition: f64,
+    spline: BSplineSurface,
+}
+
+#[cfg(feature = "serde")]
+impl TryFrom<SolutionParts> for Solution {
+    type Error = PdeError;
+    fn try_from(raw: SolutionParts) -> Result<Self, PdeError> {
+        for (what, value) in [
+            ("objective", raw.objective),
+            ("residual bound", raw.residual_bound),
+            ("boundary fit error", raw.boundary_fit_error),
+            ("condition estimate", raw.condition),
+        ] {
+            if !value.is_finite() || value < 0.0 {
+                return Err(PdeError::InvalidSolution { what, value });
+            }
+        }
+        raw.spline.validate()?;
+        Ok(Self {
+            surface: raw.surface,
+            objective: raw.objective,
+            residual_bound: raw.residual_bound,
+            boundary_fit_error: raw.boundary_fit_error,
+            unknowns: raw.unknowns,
+            condition: raw.condition,
+            spline: raw.spline,
+        })
+    }
 }
 
 /// A problem assembled on a trial space: the residual map of every patch, the fixed control

@@ -254,6 +254,22 @@ fn invalid_json_is_refused() {
         bad[key] = value;
         assert!(serde_json::from_value::<PatchGrid>(bad).is_err(), "{key}");
     }
+    // A solution round-trips, and one whose measures no solve gives, or whose spline is
+    // invalid, is refused.
+    let sj = serde_json::to_value(&sol).unwrap();
+    assert_eq!(serde_json::from_value::<Solution>(sj.clone()).unwrap(), sol);
+    for (key, value) in [
+        ("condition", serde_json::json!(-1.0)),
+        ("objective", serde_json::json!(null)),
+        ("residual_bound", serde_json::json!(-0.5)),
+    ] {
+        let mut bad = sj.clone();
+        bad[key] = value;
+        assert!(serde_json::from_value::<Solution>(bad).is_err(), "{key}");
+    }
+    let mut bad = sj.clone();
+    bad["spline"]["degree_u"] = serde_json::json!(0);
+    assert!(serde_json::from_value::<Solution>(bad).is_err(), "spline");
     // A problem with an invalid operator inside is refused too.
     let mut pj = serde_json::to_value(&problem).unwrap();
     pj["operator"]["terms"] = serde_json::json!([{"coeff": 1.0, "du": 3, "dv": 0}]);
@@ -268,4 +284,24 @@ fn every_public_item_is_in_this_suite() {
         include_str!("no_panic.rs"),
     );
     assert!(missing.is_empty(), "not covered by this suite: {missing:?}");
+}
+
+/// Every public function and method of the crate is called above (a new one fails here until
+/// it joins this suite).
+#[test]
+fn every_public_function_is_called_in_this_suite() {
+    let sources = bez_core::proptest_support::crate_sources(env!("CARGO_MANIFEST_DIR"));
+    let sources: Vec<(&str, &str)> = sources
+        .iter()
+        .map(|(f, t)| (f.as_str(), t.as_str()))
+        .collect();
+    let uncalled = bez_core::proptest_support::uncalled_in_suite(
+        include_str!("../src/lib.rs"),
+        &sources,
+        include_str!("no_panic.rs"),
+    );
+    assert!(
+        uncalled.is_empty(),
+        "not called by this suite: {uncalled:?}"
+    );
 }

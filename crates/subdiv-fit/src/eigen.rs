@@ -86,7 +86,10 @@ pub fn eval_sharp_segment_eigen<const D: usize>(
             max: 1.0,
         });
     }
-    if u == 0.0 {
+    // Below 2^-1000 the level passes 1000 and every term but p0's (eigenvalue 1) is scaled
+    // by 2^-1000 or less: the point is p0 up to rounding, and 2^(k+1) would overflow near
+    // the smallest subnormals.
+    if u < 2f64.powi(-1000) {
         return Ok(p[0]);
     }
     let (k, t) = level_of(u);
@@ -98,4 +101,28 @@ pub fn eval_sharp_segment_eigen<const D: usize>(
         out += c * (x[l] * EIGENVALUES[l].powi(k));
     }
     Ok(out)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use bez_core::Vector2;
+
+    /// At the smallest parameters (down to the smallest subnormal) the point is finite and
+    /// equals p0; just above the cut it is within rounding of p0, as at the cut.
+    #[test]
+    fn tiny_parameters_give_the_sharp_vertex() {
+        let p = [
+            Vector2::new(1.0, 2.0),
+            Vector2::new(3.0, -1.0),
+            Vector2::new(4.0, 5.0),
+        ];
+        for u in [5e-324, 1e-310, 2f64.powi(-1001)] {
+            assert_eq!(eval_sharp_segment_eigen(&p, u).unwrap(), p[0], "u = {u:e}");
+        }
+        let just_above = eval_sharp_segment_eigen(&p, 2f64.powi(-999)).unwrap();
+        assert!((just_above - p[0]).norm() <= 1e-15, "{just_above:?}");
+        let at_a_tenth = eval_sharp_segment_eigen(&p, 0.1).unwrap();
+        assert!(at_a_tenth.is_finite() && (at_a_tenth - p[0]).norm() > 1e-3);
+    }
 }

@@ -279,6 +279,31 @@ pub fn uncalled_in_suite(lib_rs: &str, sources: &[(&str, &str)], suite: &str) ->
     names
 }
 
+/// [`uncalled_in_suite`] for the crate at `manifest_dir` (its `CARGO_MANIFEST_DIR`): its
+/// `src/lib.rs` and `src/*.rs` (these test helpers aside) against the text of `suite`.
+///
+/// # Panics
+/// As [`crate_sources`].
+#[must_use]
+#[allow(
+    clippy::expect_used,
+    reason = "a test helper: an unreadable source fails the test"
+)]
+pub fn uncalled_in_crate_suite(manifest_dir: &str, suite: &str) -> Vec<String> {
+    let sources = crate_sources(manifest_dir);
+    let lib_rs = sources
+        .iter()
+        .find(|(file, _)| file == "lib.rs")
+        .map(|(_, text)| text.as_str())
+        .expect("the crate has a src/lib.rs");
+    let sources: Vec<(&str, &str)> = sources
+        .iter()
+        .filter(|(file, _)| file != "proptest_support.rs")
+        .map(|(f, t)| (f.as_str(), t.as_str()))
+        .collect();
+    uncalled_in_suite(lib_rs, &sources, suite)
+}
+
 /// Modules that `lib_rs` declares right under a `#[cfg(feature = "paper")]` attribute.
 fn paper_modules(lib_rs: &str) -> Vec<&str> {
     let mut out = Vec::new();

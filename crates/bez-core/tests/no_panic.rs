@@ -368,15 +368,8 @@ fn glam_points_never_panic() {
 /// `proptest-support` feature aside): a new one fails here until it joins this suite.
 #[test]
 fn every_public_function_is_called_in_this_suite() {
-    let sources = bez_core::proptest_support::crate_sources(env!("CARGO_MANIFEST_DIR"));
-    let sources: Vec<(&str, &str)> = sources
-        .iter()
-        .filter(|(file, _)| file != "proptest_support.rs")
-        .map(|(f, t)| (f.as_str(), t.as_str()))
-        .collect();
-    let uncalled = bez_core::proptest_support::uncalled_in_suite(
-        include_str!("../src/lib.rs"),
-        &sources,
+    let uncalled = bez_core::proptest_support::uncalled_in_crate_suite(
+        env!("CARGO_MANIFEST_DIR"),
         include_str!("no_panic.rs"),
     );
     assert!(

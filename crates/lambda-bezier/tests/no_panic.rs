@@ -186,14 +186,8 @@ fn basis_degrees_above_the_kernel_limit_are_errors() {
 /// it joins this suite).
 #[test]
 fn every_public_function_is_called_in_this_suite() {
-    let sources = bez_core::proptest_support::crate_sources(env!("CARGO_MANIFEST_DIR"));
-    let sources: Vec<(&str, &str)> = sources
-        .iter()
-        .map(|(f, t)| (f.as_str(), t.as_str()))
-        .collect();
-    let uncalled = bez_core::proptest_support::uncalled_in_suite(
-        include_str!("../src/lib.rs"),
-        &sources,
+    let uncalled = bez_core::proptest_support::uncalled_in_crate_suite(
+        env!("CARGO_MANIFEST_DIR"),
         include_str!("no_panic.rs"),
     );
     assert!(

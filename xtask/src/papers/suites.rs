@@ -4,7 +4,7 @@
 
 use std::fs;
 
-use bez_core::proptest_support::{crate_sources, missing_from_suite, uncalled_in_suite};
+use bez_core::proptest_support::{missing_from_suite, uncalled_in_crate_suite};
 use serde_json::json;
 
 use crate::tables::Table;
@@ -35,16 +35,11 @@ pub(crate) fn tables() -> Result<Vec<Table>, DynError> {
             rows.push(json!({ "crate": name, "suite": false }));
             continue;
         };
-        let sources = crate_sources(&dir.to_string_lossy());
-        let sources: Vec<(&str, &str)> = sources
-            .iter()
-            .filter(|(file, _)| file != "proptest_support.rs")
-            .map(|(f, t)| (f.as_str(), t.as_str()))
-            .collect();
+        let dir = dir.to_string_lossy();
         let items = missing_from_suite(&lib, "").len();
-        let functions = uncalled_in_suite(&lib, &sources, "").len();
-        let missing = missing_from_suite(&lib, &suite).len()
-            + uncalled_in_suite(&lib, &sources, &suite).len();
+        let functions = uncalled_in_crate_suite(&dir, "").len();
+        let missing =
+            missing_from_suite(&lib, &suite).len() + uncalled_in_crate_suite(&dir, &suite).len();
         let tests = suite.matches("#[test]").count();
         let cases = proptest_cases(&suite);
         markdown.push_str(&format!(

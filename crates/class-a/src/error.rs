@@ -169,6 +169,39 @@ pub enum ClassAError {
         /// The usable samples.
         count: usize,
     },
+    /// A prescribed end curvature is outside the range that a curve of monotone curvature with
+    /// the given end points and tangents can have (`reason` says which bound; see
+    /// [`crate::hermite_planar`]).
+    #[error(
+        "the {end} curvature {curvature} cannot be met: reachable range [{lower}, {upper}] ({reason})"
+    )]
+    CurvatureUnreachable {
+        /// Which end ("start" or "end").
+        end: &'static str,
+        /// The curvature asked for (signed).
+        curvature: f64,
+        /// The smallest reachable value (signed like the turn).
+        lower: f64,
+        /// The largest reachable value (signed like the turn).
+        upper: f64,
+        /// Why the values outside are unreachable.
+        reason: &'static str,
+    },
+    /// A solved curve meets its end conditions but its curvature is not proven monotone, so it
+    /// is not returned as a Class A curve.
+    #[error("the solved curve's curvature is not proven monotone: {verdict:?}")]
+    CurvatureNotMonotone {
+        /// The certificate's verdict.
+        verdict: crate::Monotonicity,
+    },
+    /// A segment of a curve of several segments could not be built.
+    #[error("segment {index}: {source}")]
+    Segment {
+        /// Index of the segment (from knot `index` to knot `index + 1`).
+        index: usize,
+        /// Why.
+        source: Box<ClassAError>,
+    },
 }
 
 /// The largest degree of a Class A curve: 1,024 (the paper's examples go to 49). Curve

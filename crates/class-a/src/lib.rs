@@ -33,6 +33,7 @@ mod curve;
 mod error;
 mod exact;
 mod filter;
+mod g2;
 mod general;
 mod interpolation;
 mod lcg;
@@ -41,6 +42,7 @@ mod planar;
 mod sign;
 mod spatial;
 mod spiral;
+mod spline;
 mod square;
 
 #[cfg(feature = "paper")]
@@ -53,7 +55,8 @@ pub use crate::certificate::{
 pub use crate::curve::{ClassACurve, class_a_curve};
 pub use crate::error::{ClassAError, MAX_DEGREE};
 pub use crate::exact::ScaledBernstein;
-pub use crate::general::{perturb2, perturb3};
+pub use crate::g2::{Knot, end_curvatures, hermite_planar};
+pub use crate::general::{end_preserving_curve, perturb2, perturb3};
 pub use crate::interpolation::{INTERPOLATION_TOLERANCE, Interpolation};
 pub use crate::lcg::{
     LogGraph, curvature_samples, curvature_with_derivative, log_graph, log_graph_from_points,
@@ -68,6 +71,7 @@ pub use crate::planar::{
 pub use crate::sign::{MAX_PIECES, MAX_SUBDIVISION_DEPTH};
 pub use crate::spatial::{SpatialRequirement, TypicalSpatial, rotation};
 pub use crate::spiral::{apollonius_pole, log_spiral_pole, spiral_deviation};
+pub use crate::spline::{ClassASpline, MAX_KNOTS};
 pub use crate::square::{Matrix, Matrix2, Matrix3};
 #[cfg(feature = "paper")]
 pub use crate::{planar::planar_nelder_mead, spiral::printed_pole_eq19};

@@ -158,6 +158,48 @@ fn rotate_pair<const D: usize>(x: &[f64; D], y: &[f64; D], c: f64, s: f64) -> ([
     )
 }
 
+impl<const D: usize> Matrix<D> {
+    /// x with a x = b by Gaussian elimination with partial pivoting; the failing pivot if one is
+    /// zero or not finite (infinity if the solution overflows).
+    pub(crate) fn solve(&self, b: &Vector<D>) -> Result<Vector<D>, f64> {
+        let mut a = *self;
+        let mut b = b.to_array();
+        for col in 0..D {
+            let pivot = (col..D)
+                .max_by(|&i, &j| a[(i, col)].abs().total_cmp(&a[(j, col)].abs()))
+                .unwrap_or(col);
+            let p = a[(pivot, col)].abs();
+            if !(p > 0.0 && p.is_finite()) {
+                return Err(if p.is_nan() { f64::INFINITY } else { p });
+            }
+            for k in 0..D {
+                let t = a[(col, k)];
+                a[(col, k)] = a[(pivot, k)];
+                a[(pivot, k)] = t;
+            }
+            b.swap(col, pivot);
+            for row in col + 1..D {
+                let f = a[(row, col)] / a[(col, col)];
+                for k in col..D {
+                    let v = a[(col, k)];
+                    a[(row, k)] -= f * v;
+                }
+                b[row] -= f * b[col];
+            }
+        }
+        let mut x = [0.0; D];
+        for row in (0..D).rev() {
+            let tail: f64 = (row + 1..D).map(|k| a[(row, k)] * x[k]).sum();
+            x[row] = (b[row] - tail) / a[(row, row)];
+        }
+        if x.iter().all(|v| v.is_finite()) {
+            Ok(Vector::from_array(x))
+        } else {
+            Err(f64::INFINITY)
+        }
+    }
+}
+
 impl Matrix<2> {
     /// The matrix [[a, b], [c, d]].
     #[must_use]

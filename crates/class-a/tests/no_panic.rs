@@ -9,15 +9,16 @@
 
 use bez_core::{BezierCurve, BezierForm, Vector2, Vector3};
 use class_a::{
-    Certificate, ClassACurve, ClassAError, ClassAReport, Condition, INTERPOLATION_TOLERANCE,
-    Interpolation, LogGraph, MAX_PIECES, MAX_SUBDIVISION_DEPTH, Matrix, Matrix2, Matrix3,
-    Monotonicity, PlanarFeasibility, PlanarGeometry, Proof, SUBCURVE_SAMPLES, ScaledBernstein,
-    SpatialRequirement, TypicalPlanar, TypicalSpatial, UndecidedCause, apollonius_pole,
-    class_a_curve, curvature_certificate, curvature_numerator, curvature_samples,
-    curvature_with_derivative, log_graph, log_graph_from_points, log_spiral_pole, perturb2,
-    perturb3, planar_feasibility, rotation, solve_scale, spiral_deviation, torsion_certificate,
-    torsion_numerator, torsion_samples, torsion_with_derivative, typical_matrix2,
-    typical_planar_margin,
+    Certificate, ClassACurve, ClassAError, ClassAReport, ClassASpline, Condition,
+    INTERPOLATION_TOLERANCE, Interpolation, Knot, LogGraph, MAX_KNOTS, MAX_PIECES,
+    MAX_SUBDIVISION_DEPTH, Matrix, Matrix2, Matrix3, Monotonicity, PlanarFeasibility,
+    PlanarGeometry, Proof, SUBCURVE_SAMPLES, ScaledBernstein, SpatialRequirement, TypicalPlanar,
+    TypicalSpatial, UndecidedCause, apollonius_pole, class_a_curve, curvature_certificate,
+    curvature_numerator, curvature_samples, curvature_with_derivative, end_curvatures,
+    end_preserving_curve, hermite_planar, log_graph, log_graph_from_points, log_spiral_pole,
+    perturb2, perturb3, planar_feasibility, rotation, solve_scale, spiral_deviation,
+    torsion_certificate, torsion_numerator, torsion_samples, torsion_with_derivative,
+    typical_matrix2, typical_planar_margin,
 };
 use proptest::prelude::*;
 
@@ -221,6 +222,55 @@ proptest! {
             let _ = r.is_class_a();
         }
     }
+}
+
+proptest! {
+    #![proptest_config(ProptestConfig::with_cases(100))]
+
+    /// End curvatures, the G2 Hermite solve, end-preserving perturbations and splines: typed
+    /// errors on wild knots, finite values in every `Ok`.
+    #[test]
+    fn g2_and_splines(a in [v2(), v2(), v2(), v2()], n in degree(), k in [wild(), wild()], t in wild()) {
+        let knots: Vec<Knot> = [(a[0], a[1], k[0]), (a[2], a[3], k[1])]
+            .into_iter()
+            .map(|(p, d, c)| {
+                let knot = Knot::new(p, d);
+                if c > 0.5 { knot.with_curvature(c * t) } else { knot }
+            })
+            .collect();
+        let small = n.min(12);
+        if let Ok(c) = hermite_planar(&knots[0], &knots[1], small) {
+            prop_assert!(finite_curve(c.as_bezier()));
+            if let Ok((k0, k1)) = end_curvatures(c.as_bezier()) {
+                prop_assert!(k0.is_finite() && k1.is_finite());
+            }
+        }
+        let _ = hermite_planar(&knots[0], &knots[1], n);
+        if let Ok(tp) = TypicalPlanar::from_points(&a[0], &a[1], &a[2], small) {
+            let (k0, k1) = tp.end_curvatures();
+            prop_assert!(!k0.is_nan() && !k1.is_nan());
+        }
+        if let Ok(c) = end_preserving_curve(&a[0], &a[1], &Matrix2::new(k[0], t, -t, k[1]), n) {
+            prop_assert!(finite_curve(c.as_bezier()));
+        }
+        let mut more = knots.clone();
+        more.push(Knot::new(a[1] + a[3], a[2]));
+        if let Ok(s) = ClassASpline::new(more, small) {
+            prop_assert!(s.knots().len() == 3 && s.degree() == small);
+            prop_assert!(s.segments().iter().all(|c| finite_curve(c.as_bezier())));
+            prop_assert!(s.to_bezier_segments().iter().all(finite_curve));
+            if let Ok(p) = s.eval(t) { prop_assert!(p.is_finite()); }
+        }
+    }
+}
+
+#[test]
+fn spline_knot_count_is_bounded() {
+    let knot = Knot::new(Vector2::new(0.0, 0.0), Vector2::new(1.0, 0.0));
+    assert!(matches!(
+        ClassASpline::new(vec![knot; MAX_KNOTS + 1], 5),
+        Err(ClassAError::InvalidParameter { .. })
+    ));
 }
 
 #[test]

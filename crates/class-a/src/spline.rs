@@ -1,0 +1,149 @@
+//! Planar Class A curves of several segments through knots with tangents (and curvatures).
+
+use bez_core::{BezierCurve, BezierForm, Vector2};
+
+use crate::{ClassACurve, ClassAError, Knot, hermite_planar};
+
+/// A planar curve of several Class A segments: segment i runs from knot i to knot i + 1 with the
+/// knots' tangent directions (G1 at every joint), and with their curvatures where both knots of
+/// the segment prescribe one (G2 at a joint whose curvature is prescribed), each segment built
+/// by [`hermite_planar`] at one degree, so each has proven monotone curvature.
+///
+/// The knots and the degree are the value; the segments are solved once, at construction, and
+/// kept (private). Deserialization goes through [`ClassASpline::new`], so a deserialized spline
+/// is solved and checked like a constructed one.
+///
+/// ```
+/// use bez_core::Vector2;
+/// use class_a::{ClassASpline, Knot};
+/// let knots = vec![
+///     Knot::new(Vector2::new(0.0, 0.0), Vector2::new(1.0, 0.0)),
+///     Knot::new(Vector2::new(2.0, 1.0), Vector2::new(0.2, 1.0)),
+///     Knot::new(Vector2::new(1.0, 3.0), Vector2::new(-1.0, 0.3)),
+/// ];
+/// let spline = ClassASpline::new(knots, 6)?;
+/// assert_eq!(spline.segments().len(), 2);
+/// assert!((spline.eval(1.0)? - Vector2::new(2.0, 1.0)).norm() < 1e-12);
+/// # Ok::<(), class_a::ClassAError>(())
+/// ```
+#[derive(Debug, Clone, PartialEq)]
+#[cfg_attr(
+    feature = "serde",
+    derive(serde::Serialize, serde::Deserialize),
+    serde(try_from = "SplineRepr", into = "SplineRepr")
+)]
+pub struct ClassASpline {
+    knots: Vec<Knot>,
+    degree: usize,
+    segments: Vec<ClassACurve<2>>,
+}
+
+/// Serialized form of [`ClassASpline`]: knots and degree, solved again when read.
+#[cfg(feature = "serde")]
+#[derive(serde::Serialize, serde::Deserialize)]
+struct SplineRepr {
+    knots: Vec<Knot>,
+    degree: usize,
+}
+
+#[cfg(feature = "serde")]
+impl TryFrom<SplineRepr> for ClassASpline {
+    type Error = ClassAError;
+    fn try_from(r: SplineRepr) -> Result<Self, ClassAError> {
+        Self::new(r.knots, r.degree)
+    }
+}
+
+#[cfg(feature = "serde")]
+impl From<ClassASpline> for SplineRepr {
+    fn from(s: ClassASpline) -> Self {
+        Self {
+            knots: s.knots,
+            degree: s.degree,
+        }
+    }
+}
+
+/// The most knots of a spline (checked before any segment is solved).
+pub const MAX_KNOTS: usize = 4096;
+
+impl ClassASpline {
+    /// Solves the segments between consecutive knots at the given degree ([`hermite_planar`]).
+    ///
+    /// # Errors
+    /// [`ClassAError::InvalidParameter`] for fewer than 2 or more than [`MAX_KNOTS`] knots;
+    /// [`ClassAError::DegreeTooLow`] / [`ClassAError::DegreeTooHigh`]; the first segment that
+    /// fails as [`ClassAError::Segment`] with its index and the error of [`hermite_planar`].
+    pub fn new(knots: Vec<Knot>, degree: usize) -> Result<Self, ClassAError> {
+        if knots.len() < 2 || knots.len() > MAX_KNOTS {
+            return Err(ClassAError::InvalidParameter {
+                name: "number of knots",
+                value: knots.len() as f64,
+                expected: "2..=4096 (MAX_KNOTS)",
+            });
+        }
+        crate::error::check_degree(degree, 2)?;
+        let segments = knots
+            .windows(2)
+            .enumerate()
+            .map(|(index, w)| {
+                hermite_planar(&w[0], &w[1], degree).map_err(|e| ClassAError::Segment {
+                    index,
+                    source: Box::new(e),
+                })
+            })
+            .collect::<Result<Vec<_>, _>>()?;
+        Ok(Self {
+            knots,
+            degree,
+            segments,
+        })
+    }
+
+    /// The knots.
+    #[must_use]
+    pub fn knots(&self) -> &[Knot] {
+        &self.knots
+    }
+
+    /// The degree of every segment.
+    #[must_use]
+    pub fn degree(&self) -> usize {
+        self.degree
+    }
+
+    /// The segments, segment i from knot i to knot i + 1.
+    #[must_use]
+    pub fn segments(&self) -> &[ClassACurve<2>] {
+        &self.segments
+    }
+
+    /// The point at u ∈ [0, m] for m segments: segment ⌊u⌋ (the last one at u = m) at its
+    /// parameter u − ⌊u⌋.
+    ///
+    /// # Errors
+    /// [`ClassAError::InvalidParameter`] for u outside [0, m] or NaN.
+    pub fn eval(&self, u: f64) -> Result<Vector2, ClassAError> {
+        let m = self.segments.len();
+        if !(0.0..=m as f64).contains(&u) {
+            return Err(ClassAError::InvalidParameter {
+                name: "u",
+                value: u,
+                expected: "in [0, number of segments]",
+            });
+        }
+        let index = (u.floor() as usize).min(m - 1);
+        let t = (u - index as f64).clamp(0.0, 1.0);
+        Ok(self.segments[index].as_bezier().eval(t)?)
+    }
+
+    /// The segments' Bézier forms, in order (for flattening, export or bez-core's kurbo
+    /// conversion `curves_to_bez_path`).
+    #[must_use]
+    pub fn to_bezier_segments(&self) -> Vec<BezierCurve<2>> {
+        self.segments
+            .iter()
+            .map(|s| s.as_bezier().clone())
+            .collect()
+    }
+}

@@ -1,0 +1,125 @@
+//! Class A curves with prescribed end curvature, and curves of several segments.
+//!
+//! First a spline through knots of a log spiral, G1 and then G2 at the knots, with the joints'
+//! tangent and curvature jumps and each segment's certificate. Then the reach of the G2 solve:
+//! for G1 data of typical curves (degree n, total turn ψ, both branches of condition (4)), the
+//! typical end curvatures (κ₀, κ₁) are scaled by factors on a grid and the outcomes counted.
+//!
+//! ```text
+//! cargo run -p class-a --example spline
+//! ```
+#![allow(clippy::print_stdout, reason = "an example reports on the terminal")]
+
+use bez_core::{BezierCurve, Vector2};
+use class_a::{
+    ClassAError, ClassASpline, Knot, class_a_curve, curvature_certificate, end_curvatures,
+    hermite_planar, typical_matrix2,
+};
+
+/// Knots on the log spiral r = e^{0.2φ} at φ = 0, 1.2, 2.4, 3.6, with its curvature if asked.
+fn spiral_knots(with_curvature: bool) -> Vec<Knot> {
+    let b: f64 = 0.2;
+    (0..4)
+        .map(|i| {
+            let phi = 1.2 * f64::from(i);
+            let r = (b * phi).exp();
+            let (sn, cs) = phi.sin_cos();
+            let knot = Knot::new(
+                Vector2::new(r * cs, r * sn),
+                Vector2::new(b * cs - sn, b * sn + cs),
+            );
+            if with_curvature {
+                knot.with_curvature(1.0 / (r * (1.0 + b * b).sqrt()))
+            } else {
+                knot
+            }
+        })
+        .collect()
+}
+
+fn report(name: &str, spline: &ClassASpline) -> Result<(), ClassAError> {
+    let segs = spline.to_bezier_segments();
+    println!(
+        "{name}: {} segments of degree {}",
+        segs.len(),
+        spline.degree()
+    );
+    for (i, w) in segs.windows(2).enumerate() {
+        let (u, v) = (w[0].derivative()?.eval(1.0)?, w[1].derivative()?.eval(0.0)?);
+        let (k0, k1) = (w[0].signed_curvature(1.0)?, w[1].signed_curvature(0.0)?);
+        println!(
+            "  joint {}: tangent jump {:.1e} rad, curvature {:.6} | {:.6}",
+            i + 1,
+            u.perp(&v).atan2(u.dot(&v)).abs(),
+            k0,
+            k1
+        );
+    }
+    for (i, s) in segs.iter().enumerate() {
+        println!("  segment {i}: {:?}", curvature_certificate(s)?.verdict);
+    }
+    Ok(())
+}
+
+/// G1 knots of the typical curve with scale s and angle θ per leg.
+fn typical(s: f64, theta: f64, n: usize) -> Result<(Knot, Knot, BezierCurve<2>), ClassAError> {
+    let c = class_a_curve(
+        &Vector2::new(0.0, 0.0),
+        &Vector2::new(1.0, 0.0),
+        &typical_matrix2(s, theta),
+        n,
+    )?;
+    let p = c.points();
+    Ok((
+        Knot::new(p[0], p[1] - p[0]),
+        Knot::new(p[n], p[n] - p[n - 1]),
+        c,
+    ))
+}
+
+fn main() -> Result<(), ClassAError> {
+    report("G1 spline", &ClassASpline::new(spiral_knots(false), 6)?)?;
+    report("G2 spline", &ClassASpline::new(spiral_knots(true), 6)?)?;
+
+    let factors = [0.5, 0.7, 0.85, 0.95, 1.0, 1.05, 1.15, 1.4, 2.0];
+    println!();
+    println!(
+        "G2 reach: end curvatures of the typical curve scaled by {factors:?} each ({} targets per row)",
+        2 * factors.len() * factors.len()
+    );
+    println!("| n | turn ψ | reached | outside the bounds | not monotone | no convergence |");
+    println!("|---|---|---|---|---|---|");
+    for n in [4usize, 7, 12] {
+        for turn in [0.3, 0.6, 1.2, 2.0, 2.8] {
+            let theta = turn / (n - 1) as f64;
+            let c = theta.cos();
+            let mut counts = [0usize; 4];
+            // Curvature decreasing from the start (s cos θ > 1) and increasing (s < cos θ).
+            for s in [1.0 / c + 0.1, c - 0.1] {
+                let (start, end, curve) = typical(s, theta, n)?;
+                let (k0, k1) = end_curvatures(&curve)?;
+                for f0 in factors {
+                    for f1 in factors {
+                        let r = hermite_planar(
+                            &start.with_curvature(k0 * f0),
+                            &end.with_curvature(k1 * f1),
+                            n,
+                        );
+                        let slot = match r {
+                            Ok(_) => 0,
+                            Err(ClassAError::CurvatureUnreachable { .. }) => 1,
+                            Err(ClassAError::CurvatureNotMonotone { .. }) => 2,
+                            Err(_) => 3,
+                        };
+                        counts[slot] += 1;
+                    }
+                }
+            }
+            println!(
+                "| {n} | {turn} | {} | {} | {} | {} |",
+                counts[0], counts[1], counts[2], counts[3]
+            );
+        }
+    }
+    Ok(())
+}

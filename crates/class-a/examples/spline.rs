@@ -1,7 +1,8 @@
 //! Class A curves with prescribed end curvature, and curves of several segments.
 //!
-//! First a spline through knots of a log spiral, G1 and then G2 at the knots, with the joints'
-//! tangent and curvature jumps and each segment's certificate. Then the reach of the G2 solve:
+//! First a spline through knots of a log spiral, G1, G2 with the spiral's curvatures and G2 with
+//! curvatures chosen from the G1 spline, with the joints' tangent and curvature jumps and each
+//! segment's certificate. Then the reach of the G2 solve:
 //! for G1 data of typical curves (degree n, total turn ψ, both branches of condition (4)), the
 //! typical end curvatures (κ₀, κ₁) are scaled by factors on a grid and the outcomes counted.
 //! Last, the G2 data of perturbed typical curves with monotone curvature are solved back.
@@ -128,6 +129,8 @@ fn typical(s: f64, theta: f64, n: usize) -> Result<(Knot, Knot, BezierCurve<2>),
 fn main() -> Result<(), ClassAError> {
     report("G1 spline", &ClassASpline::new(spiral_knots(false), 6)?)?;
     report("G2 spline", &ClassASpline::new(spiral_knots(true), 6)?)?;
+    let auto = ClassASpline::with_g2_joints(spiral_knots(false), 6)?;
+    report("G2 spline, curvatures chosen from the G1 one", &auto)?;
 
     let factors = [0.5, 0.7, 0.85, 0.95, 1.0, 1.05, 1.15, 1.4, 2.0];
     println!();

@@ -194,7 +194,7 @@ impl Triangle {
         let chord = c.norm();
         let l0 = chord * (turn - chord_angle).sin().abs() / turn.sin().abs();
         let l1 = chord * chord_angle.sin().abs() / turn.sin().abs();
-        let alpha1 = start.point + start.tangent * (l0 / start.tangent.norm());
+        let alpha1 = start.point + start.tangent / start.tangent.norm() * l0;
         Ok(Self {
             alpha1,
             turn,

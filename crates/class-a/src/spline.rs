@@ -100,6 +100,67 @@ impl ClassASpline {
         })
     }
 
+    /// G2 at every knot without choosing the curvatures: knots without a prescribed curvature
+    /// get one from the G1 spline of the same knots, then every segment is solved with both end
+    /// curvatures ([`hermite_planar`]). The chosen curvatures are kept in
+    /// [`ClassASpline::knots`], so the result serializes as a spline with prescribed curvatures.
+    ///
+    /// At an end knot the choice is the G1 segment's own end curvature. At an interior knot the
+    /// G1 segments meeting there have one-sided curvatures κ₋ (the left segment's end) and κ₊
+    /// (the right one's start); three rules are tried in turn, each at every knot: the mean
+    /// (κ₋ + κ₊)/2, then κ₋ (the left segment keeps its end curvature, the right one's start
+    /// moves), then κ₊. The first rule under which every segment is solved, with proven monotone
+    /// curvature, is returned. Which one works depends on the direction of the moves: moving a
+    /// segment's end curvatures apart keeps its curvature monotone more often than moving them
+    /// together (see the reach in the crate's docs).
+    ///
+    /// # Errors
+    /// As [`ClassASpline::new`] for the G1 spline, then the error of the first rule (the mean)
+    /// when no rule gives a spline; [`ClassAError::Segment`] with [`ClassAError::Singular`]
+    /// inside when a G1 segment has a zero end leg.
+    pub fn with_g2_joints(knots: Vec<Knot>, degree: usize) -> Result<Self, ClassAError> {
+        let free: Vec<Knot> = knots
+            .iter()
+            .map(|k| Knot::new(k.point, k.tangent))
+            .collect();
+        let g1 = Self::new(free, degree)?;
+        let ends = g1
+            .segments
+            .iter()
+            .enumerate()
+            .map(|(index, seg)| {
+                crate::end_curvatures(seg.as_bezier()).map_err(|e| ClassAError::Segment {
+                    index,
+                    source: Box::new(e),
+                })
+            })
+            .collect::<Result<Vec<_>, _>>()?;
+        let choose = |weight_left: f64| -> Vec<Knot> {
+            knots
+                .iter()
+                .enumerate()
+                .map(|(i, k)| {
+                    let left = i.checked_sub(1).map(|j| ends[j].1);
+                    let right = ends.get(i).map(|e| e.0);
+                    let estimate = match (left, right) {
+                        (Some(l), Some(r)) => weight_left * l + (1.0 - weight_left) * r,
+                        // Every knot ends or starts at least one segment.
+                        (l, r) => l.or(r).unwrap_or(0.0),
+                    };
+                    Knot::new(k.point, k.tangent).with_curvature(k.curvature.unwrap_or(estimate))
+                })
+                .collect()
+        };
+        let first = Self::new(choose(0.5), degree);
+        if first.is_ok() {
+            return first;
+        }
+        [1.0, 0.0]
+            .into_iter()
+            .find_map(|weight| Self::new(choose(weight), degree).ok())
+            .map_or(first, Ok)
+    }
+
     /// The knots.
     #[must_use]
     pub fn knots(&self) -> &[Knot] {

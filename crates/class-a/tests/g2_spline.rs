@@ -347,6 +347,36 @@ fn spline_g1_and_g2_joints() {
     assert_joints(&g1, false);
     let g2 = ClassASpline::new(knots(true), 6).unwrap();
     assert_joints(&g2, true);
+    // G2 with the joint curvatures chosen from the G1 spline (means of the one-sided values).
+    let auto = ClassASpline::with_g2_joints(knots(false), 6).unwrap();
+    assert_joints(&auto, true);
+    for (i, knot) in auto.knots().iter().enumerate() {
+        let k = knot.curvature.unwrap();
+        let segs = g1.to_bezier_segments();
+        let left = i
+            .checked_sub(1)
+            .map(|j| segs[j].signed_curvature(1.0).unwrap());
+        let right = segs.get(i).map(|s| s.signed_curvature(0.0).unwrap());
+        let expected = match (left, right) {
+            (Some(l), Some(r)) => 0.5 * (l + r),
+            (l, r) => l.or(r).unwrap(),
+        };
+        assert!(rel(k, expected) < 1e-9, "knot {i}: {k} {expected}");
+    }
+    // Prescribed curvatures are kept.
+    let mut mixed = knots(false);
+    let left = g1.to_bezier_segments()[0].signed_curvature(1.0).unwrap();
+    mixed[1] = mixed[1].with_curvature(left);
+    let kept = ClassASpline::with_g2_joints(mixed, 6).unwrap();
+    assert_eq!(kept.knots()[1].curvature, Some(left));
+    assert_joints(&kept, true);
+    // A prescribed curvature that makes a segment's curvature non-monotone is an error naming it.
+    let mut bad = knots(false);
+    bad[1] = bad[1].with_curvature(1.2 * left);
+    assert!(matches!(
+        ClassASpline::with_g2_joints(bad, 6),
+        Err(ClassAError::Segment { .. })
+    ));
 }
 
 #[test]

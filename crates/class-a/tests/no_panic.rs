@@ -261,6 +261,11 @@ proptest! {
             prop_assert!(s.to_bezier_segments().iter().all(finite_curve));
             if let Ok(p) = s.eval(t) { prop_assert!(p.is_finite()); }
         }
+        let mut four = knots.clone();
+        four.push(Knot::new(a[1] - a[3], a[0]));
+        if let Ok(s) = ClassASpline::with_g2_joints(four, small) {
+            prop_assert!(s.knots().iter().all(|k| k.curvature.is_some_and(f64::is_finite)));
+        }
     }
 }
 

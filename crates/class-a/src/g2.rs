@@ -82,6 +82,61 @@ pub fn end_curvatures(curve: &BezierCurve<2>) -> Result<(f64, f64), ClassAError>
     Ok((at(d0, d1, d0, 0.0)?, at(e0, e1, e1, 1.0)?))
 }
 
+/// Curvature and torsion at both ends of a spatial Bézier curve, [(κ(0), τ(0)), (κ(1), τ(1))],
+/// from its first and last four control points.
+///
+/// With x‴(0) = n(n − 1)(n − 2)(Δb₂ − 2Δb₁ + Δb₀), column operations give
+/// det(x′, x″, x‴) = n³(n − 1)²(n − 2) det(Δb₀, Δb₁, Δb₂), so
+///
+/// κ(0) = (n − 1)/n · |Δb₀ × Δb₁| / |Δb₀|³,  τ(0) = (n − 2)/n · det(Δb₀, Δb₁, Δb₂) / |Δb₀ × Δb₁|²,
+///
+/// and at t = 1 the same with Δbₙ₋₃, Δbₙ₋₂, Δbₙ₋₁ (in this order) and |Δbₙ₋₁|³. For a Class A
+/// curve det(Mʲv, Mʲ⁺¹v, Mʲ⁺²v) = (det M)ʲ det(v, Mv, M²v): the end torsions are tied by
+/// (det M)ⁿ⁻³ as the curvatures are (module docs). A spatial G2 solve (prescribed curvature and
+/// torsion with a general 3 × 3 matrix) is not provided.
+///
+/// # Errors
+/// [`ClassAError::DegreeTooLow`] for n < 3; [`ClassAError::Singular`] when an end leg is zero or
+/// the first (last) two legs are parallel (torsion undefined there);
+/// [`ClassAError::NonFinite`] when a value overflows.
+pub fn end_curvatures_torsions(curve: &BezierCurve<3>) -> Result<[(f64, f64); 2], ClassAError> {
+    let n = curve.degree();
+    crate::error::check_degree(n, 3)?;
+    let p = curve.points();
+    let (nf, leg) = (n as f64, |i: usize| p[i + 1] - p[i]);
+    // `cross` is that of the two legs at the end (κ and the torsion's denominator), `det` the
+    // triple product of the three legs there in curve order.
+    let at = |cross: Vector<3>, det: f64, tangent: Vector<3>, parameter: f64| {
+        let (t, w) = (tangent.norm(), cross.norm());
+        if t == 0.0 || w == 0.0 {
+            return Err(ClassAError::Singular {
+                quantity: if t == 0.0 {
+                    "the end leg"
+                } else {
+                    "the cross product of the end legs"
+                },
+                parameter,
+            });
+        }
+        let kappa = (nf - 1.0) / nf * (w / t) / (t * t);
+        let tau = (nf - 2.0) / nf * (det / w) / w;
+        if kappa.is_finite() && tau.is_finite() {
+            Ok((kappa, tau))
+        } else {
+            Err(ClassAError::NonFinite {
+                name: "curvature or torsion",
+            })
+        }
+    };
+    let (d0, d1, d2) = (leg(0), leg(1), leg(2));
+    let (e0, e1, e2) = (leg(n - 3), leg(n - 2), leg(n - 1));
+    let start = d0.cross(&d1);
+    Ok([
+        at(start, start.dot(&d2), d0, 0.0)?,
+        at(e1.cross(&e2), e0.cross(&e1).dot(&e2), e2, 1.0)?,
+    ])
+}
+
 impl TypicalPlanar {
     /// Signed end curvatures in closed form (module docs of the formulas):
     /// κ(0) = (n − 1) s sin θ / (nL) and κ(1) = (n − 1) sin θ / (n L sⁿ), evaluated through

@@ -55,7 +55,7 @@ pub use crate::certificate::{
 pub use crate::curve::{ClassACurve, class_a_curve};
 pub use crate::error::{ClassAError, MAX_DEGREE};
 pub use crate::exact::ScaledBernstein;
-pub use crate::g2::{Knot, end_curvatures, hermite_planar};
+pub use crate::g2::{Knot, end_curvatures, end_curvatures_torsions, hermite_planar};
 pub use crate::general::{end_preserving_curve, perturb2, perturb3};
 pub use crate::interpolation::{INTERPOLATION_TOLERANCE, Interpolation};
 pub use crate::lcg::{

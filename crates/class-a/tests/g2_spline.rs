@@ -7,10 +7,11 @@
     reason = "tests fail loudly on unexpected errors"
 )]
 
-use bez_core::{BezierCurve, BezierForm, Vector2};
+use bez_core::{BezierCurve, BezierForm, Vector2, Vector3};
 use class_a::{
     ClassAError, ClassASpline, Knot, Matrix2, TypicalPlanar, class_a_curve, curvature_certificate,
-    end_curvatures, end_preserving_curve, hermite_planar, perturb2, typical_matrix2,
+    end_curvatures, end_curvatures_torsions, end_preserving_curve, hermite_planar, perturb2,
+    typical_matrix2,
 };
 use proptest::prelude::*;
 
@@ -51,6 +52,25 @@ proptest! {
         };
         prop_assert!((k0 - r0).abs() <= 1e-9 * (1.0 + r0.abs()), "{k0} {r0}");
         prop_assert!((k1 - r1).abs() <= 1e-9 * (1.0 + r1.abs()), "{k1} {r1}");
+    }
+
+    /// κ and τ at both ends from the first and last four control points equal bez-core's
+    /// curvature and torsion (from the derivative curves) on random spatial curves.
+    #[test]
+    fn end_curvatures_torsions_match_bez_core(
+        coords in prop::collection::vec(-4.0..4.0f64, 12..36),
+    ) {
+        let pts: Vec<Vector3> = coords
+            .chunks_exact(3)
+            .map(|c| Vector3::new(c[0], c[1], c[2]))
+            .collect();
+        let c = BezierCurve::new(pts).unwrap();
+        let Ok([(k0, t0), (k1, t1)]) = end_curvatures_torsions(&c) else { return Ok(()) };
+        for (got, t, kind) in [(k0, 0.0, 0), (t0, 0.0, 1), (k1, 1.0, 0), (t1, 1.0, 1)] {
+            let want = if kind == 0 { c.curvature(t) } else { c.torsion(t) };
+            let Ok(want) = want else { return Ok(()) };
+            prop_assert!((got - want).abs() <= 1e-8 * (1.0 + want.abs()), "{got} {want} at {t}");
+        }
     }
 
     /// The typical curve's closed forms κ(0) = (n−1)s sin θ/(nL), κ(1) = (n−1) sin θ/(nLsⁿ)

@@ -15,10 +15,10 @@ use class_a::{
     PlanarGeometry, Proof, SUBCURVE_SAMPLES, ScaledBernstein, SpatialRequirement, TypicalPlanar,
     TypicalSpatial, UndecidedCause, apollonius_pole, class_a_curve, curvature_certificate,
     curvature_numerator, curvature_samples, curvature_with_derivative, end_curvatures,
-    end_preserving_curve, hermite_planar, log_graph, log_graph_from_points, log_spiral_pole,
-    perturb2, perturb3, planar_feasibility, rotation, solve_scale, spiral_deviation,
-    torsion_certificate, torsion_numerator, torsion_samples, torsion_with_derivative,
-    typical_matrix2, typical_planar_margin,
+    end_curvatures_torsions, end_preserving_curve, hermite_planar, log_graph,
+    log_graph_from_points, log_spiral_pole, perturb2, perturb3, planar_feasibility, rotation,
+    solve_scale, spiral_deviation, torsion_certificate, torsion_numerator, torsion_samples,
+    torsion_with_derivative, typical_matrix2, typical_planar_margin,
 };
 use proptest::prelude::*;
 
@@ -162,6 +162,9 @@ proptest! {
         let m3 = perturb3(&(rotation(&b, th) * s), [t, 0.0, 0.0, t]);
         if let Ok(c) = class_a_curve(&b, &Vector3::new(1.0, t, 0.0), &m3, n) {
             if let Ok((num, _)) = torsion_numerator(&c) { let _ = num.degree(); }
+            if let Ok([(k0, t0), (k1, t1)]) = end_curvatures_torsions(&c) {
+                prop_assert!([k0, t0, k1, t1].iter().all(|v| v.is_finite()));
+            }
             if let Ok((tau, dtau)) = torsion_with_derivative(&c, t) {
                 prop_assert!(tau.is_finite() && dtau.is_finite());
             }

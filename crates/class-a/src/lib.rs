@@ -30,11 +30,12 @@
 
 mod certificate;
 mod curve;
+mod end_curvature;
 mod error;
 mod exact;
 mod filter;
-mod g2;
 mod general;
+mod hermite;
 mod interpolation;
 mod lcg;
 mod matrix;
@@ -53,10 +54,11 @@ pub use crate::certificate::{
     torsion_certificate, torsion_numerator,
 };
 pub use crate::curve::{ClassACurve, class_a_curve};
+pub use crate::end_curvature::{end_curvatures, end_curvatures_torsions};
 pub use crate::error::{ClassAError, MAX_DEGREE};
 pub use crate::exact::ScaledBernstein;
-pub use crate::g2::{Knot, end_curvatures, end_curvatures_torsions, hermite_planar};
 pub use crate::general::{end_preserving_curve, perturb2, perturb3};
+pub use crate::hermite::{Knot, hermite_planar};
 pub use crate::interpolation::{INTERPOLATION_TOLERANCE, Interpolation};
 pub use crate::lcg::{
     LogGraph, curvature_samples, curvature_with_derivative, log_graph, log_graph_from_points,

@@ -8,6 +8,7 @@
 use bez_core::BezierCurve;
 
 use crate::ClassAError;
+use crate::dd::Dd;
 use crate::exact::{ScaledBernstein, to_common_integers};
 use crate::filter::Filtered;
 use crate::sign::{Positivity, SignProfile, locate_sign_change, positivity, sign_profile};
@@ -59,6 +60,9 @@ pub enum Proof {
     /// The floating-point filter: f64 coefficients whose signs exceed a rigorous rounding-error
     /// bound (the common case, no big integers formed).
     Filter,
+    /// The filter's second stage: the same bound in double-double arithmetic (about 106
+    /// significant bits), for numerators that cancel below f64 resolution.
+    DoubleDouble,
     /// Exact integer arithmetic (the filter could not decide).
     Exact,
 }
@@ -230,8 +234,8 @@ fn decide(
     })
 }
 
-/// The filter's verdict as a certificate, if it decided.
-fn filtered(f: Filtered) -> Option<Certificate> {
+/// A filter stage's verdict as a certificate, if it decided.
+fn filtered(f: Filtered, proof: Proof) -> Option<Certificate> {
     let verdict = match f {
         Filtered::Increasing => Monotonicity::Increasing,
         Filtered::Decreasing => Monotonicity::Decreasing,
@@ -241,7 +245,7 @@ fn filtered(f: Filtered) -> Option<Certificate> {
     Some(Certificate {
         verdict,
         by_coefficient_signs: true,
-        proof: Proof::Filter,
+        proof,
     })
 }
 
@@ -266,8 +270,9 @@ pub(crate) fn torsion_certificate_exact(
 /// First a floating-point filter (module docs of `filter`: the same numerator in f64 with a
 /// rigorous bound on every coefficient's rounding error) decides the common case, where the
 /// regularity polynomial and the numerator have coefficients of proven sign
-/// ([`Proof::Filter`]); otherwise the exact path below decides ([`Proof::Exact`]). Both give
-/// the same verdict (tested).
+/// ([`Proof::Filter`]); then the same filter in double-double arithmetic, for numerators that
+/// cancel below f64 resolution ([`Proof::DoubleDouble`]); otherwise the exact path below
+/// decides ([`Proof::Exact`]). All give the same verdict (tested).
 ///
 /// κ² = G/P³ with P = |x'|² and G = |x' × x''|², so d(κ²)/dt = N/P⁴ with N = G'P − 3GP'
 /// ([`curvature_numerator`]), formed exactly in integers. Regularity P > 0 on [0, 1] is proven
@@ -282,10 +287,17 @@ pub fn curvature_certificate<const D: usize>(
     curve: &BezierCurve<D>,
 ) -> Result<Certificate, ClassAError> {
     crate::error::check_degree(curve.degree(), 2)?;
-    match filtered(crate::filter::curvature(curve)) {
-        Some(c) => Ok(c),
-        None => curvature_certificate_exact(curve),
+    if let Some(c) =
+        filtered(crate::filter::curvature::<f64, D>(curve), Proof::Filter).or_else(|| {
+            filtered(
+                crate::filter::curvature::<Dd, D>(curve),
+                Proof::DoubleDouble,
+            )
+        })
+    {
+        return Ok(c);
     }
+    curvature_certificate_exact(curve)
 }
 
 /// Proven certificate of monotone torsion of a spatial curve of any degree.
@@ -299,8 +311,10 @@ pub fn curvature_certificate<const D: usize>(
 /// [`ClassAError::Singular`] when x' × x'' = 0 at an exact dyadic parameter.
 pub fn torsion_certificate(curve: &BezierCurve<3>) -> Result<Certificate, ClassAError> {
     crate::error::check_degree(curve.degree(), 3)?;
-    match filtered(crate::filter::torsion(curve)) {
-        Some(c) => Ok(c),
-        None => torsion_certificate_exact(curve),
+    if let Some(c) = filtered(crate::filter::torsion::<f64>(curve), Proof::Filter)
+        .or_else(|| filtered(crate::filter::torsion::<Dd>(curve), Proof::DoubleDouble))
+    {
+        return Ok(c);
     }
+    torsion_certificate_exact(curve)
 }

@@ -30,6 +30,7 @@
 
 mod certificate;
 mod curve;
+mod dd;
 mod error;
 mod exact;
 mod filter;

@@ -31,6 +31,7 @@
 mod certificate;
 mod curve;
 mod dd;
+mod edit;
 mod error;
 mod exact;
 mod filter;
@@ -52,6 +53,7 @@ pub use crate::certificate::{
     torsion_certificate, torsion_numerator,
 };
 pub use crate::curve::{ClassACurve, class_a_curve};
+pub use crate::edit::{EditFrame, FRAME_SAMPLES};
 pub use crate::error::{ClassAError, MAX_DEGREE};
 pub use crate::exact::ScaledBernstein;
 pub use crate::general::{perturb2, perturb3};

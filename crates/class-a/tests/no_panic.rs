@@ -9,11 +9,11 @@
 
 use bez_core::{BezierCurve, BezierForm, Vector2, Vector3};
 use class_a::{
-    Certificate, ClassACurve, ClassAError, ClassAReport, Condition, INTERPOLATION_TOLERANCE,
-    Interpolation, LogGraph, MAX_PIECES, MAX_SUBDIVISION_DEPTH, Matrix, Matrix2, Matrix3,
-    Monotonicity, PlanarFeasibility, PlanarGeometry, Proof, SUBCURVE_SAMPLES, ScaledBernstein,
-    SpatialRequirement, TypicalPlanar, TypicalSpatial, UndecidedCause, apollonius_pole,
-    class_a_curve, curvature_certificate, curvature_numerator, curvature_samples,
+    Certificate, ClassACurve, ClassAError, ClassAReport, Condition, EditFrame, FRAME_SAMPLES,
+    INTERPOLATION_TOLERANCE, Interpolation, LogGraph, MAX_PIECES, MAX_SUBDIVISION_DEPTH, Matrix,
+    Matrix2, Matrix3, Monotonicity, PlanarFeasibility, PlanarGeometry, Proof, SUBCURVE_SAMPLES,
+    ScaledBernstein, SpatialRequirement, TypicalPlanar, TypicalSpatial, UndecidedCause,
+    apollonius_pole, class_a_curve, curvature_certificate, curvature_numerator, curvature_samples,
     curvature_with_derivative, log_graph, log_graph_from_points, log_spiral_pole, perturb2,
     perturb3, planar_feasibility, rotation, solve_scale, spiral_deviation, torsion_certificate,
     torsion_numerator, torsion_samples, torsion_with_derivative, typical_matrix2,
@@ -69,6 +69,12 @@ proptest! {
             let _ = tp.margin();
             let _ = tp.log_curvature_point(t);
         }
+        let frame: Result<EditFrame<TypicalPlanar, 2>, ClassAError> = TypicalPlanar::edit(&a0, &a1, &a2, n);
+        if let Ok(f) = frame {
+            prop_assert!(finite_curve(&f.curve) && f.solution.s().is_finite());
+            prop_assert!(f.slope.is_none_or(f64::is_finite));
+            if let Ok(cert) = f.certificate { let _ = cert.is_monotone(); }
+        }
         if let Ok((_, c, _)) = TypicalPlanar::generate(&a0, &a1, &a2, n, 1e-9) {
             prop_assert!(finite_curve(&c));
         }
@@ -116,6 +122,10 @@ proptest! {
                 let _ = ts.torsion_condition();
                 if let Ok(next) = ts.update(&a) {
                     prop_assert!(next.s.is_finite() && next.theta.is_finite());
+                }
+                if let Ok(f) = ts.edit(&a) {
+                    prop_assert!(finite_curve(&f.curve) && f.solution.s.is_finite());
+                    prop_assert!(f.slope.is_none_or(f64::is_finite));
                 }
             }
         }
@@ -226,6 +236,7 @@ proptest! {
 #[test]
 fn limits_are_stated() {
     const { assert!(MAX_PIECES > 0 && MAX_SUBDIVISION_DEPTH > 0 && SUBCURVE_SAMPLES > 0) };
+    const { assert!(FRAME_SAMPLES >= 2) };
     let r = ClassAReport::of_2x2(&Matrix2::identity()).unwrap();
     let c: Condition = r.farin3;
     assert!(c.holds);

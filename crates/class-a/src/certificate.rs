@@ -222,16 +222,55 @@ fn decide(
                 bracket: (lo, hi),
             }
         }
-        SignProfile::Undecided { lo, hi } => Monotonicity::Undecided {
+        SignProfile::Undecided { lo, hi } => double_roots(num).unwrap_or(Monotonicity::Undecided {
             cause: UndecidedCause::Sign,
             interval: (lo, hi),
-        },
+        }),
     };
     Ok(Certificate {
         verdict,
         by_coefficient_signs,
         proof: Proof::Exact,
     })
+}
+
+/// The verdict for a numerator whose subdivision did not settle (a double root, or a root
+/// within 2⁻⁹⁶ of a piece boundary), from the odd part O of its square-free decomposition
+/// (module `squarefree`): O of one sign gives N's sign (read at a dyadic point where N ≠ 0);
+/// a proven sign change of O, bracketed and confirmed by exact values of N of opposite signs
+/// at the bracket's dyadic ends, is an interior extremum. `None` when neither is proven.
+fn double_roots(num: &ScaledBernstein) -> Option<Monotonicity> {
+    let odd = crate::squarefree::odd_part(num)?;
+    match sign_profile(&odd) {
+        SignProfile::NonNegative | SignProfile::NonPositive => match nonzero_sign(num)? {
+            1 => Some(Monotonicity::Increasing),
+            _ => Some(Monotonicity::Decreasing),
+        },
+        SignProfile::Changes { positive, negative } => {
+            let (lo, hi) = locate_sign_change(&odd, &positive, &negative);
+            // The bracket's ends are dyadic of level ≤ 48, exact in f64.
+            let level = 48;
+            let at = |x: f64| {
+                let m = x * 2f64.powi(level);
+                (m.fract() == 0.0 && (0.0..=2f64.powi(level)).contains(&m))
+                    .then(|| num.sign_at(&num_bigint::BigInt::from(m as u64), level as u32))
+            };
+            (at(lo)? * at(hi)? == -1).then_some(Monotonicity::NotMonotone {
+                extremum: 0.5 * (lo + hi),
+                bracket: (lo, hi),
+            })
+        }
+        SignProfile::Zero | SignProfile::Undecided { .. } => None,
+    }
+}
+
+/// The sign of N at some dyadic point where N ≠ 0 (N has at most deg N zeros, so one of
+/// 2ᵏ + 1 > deg N + 1 points of level k is not a zero); `None` for N ≡ 0.
+fn nonzero_sign(num: &ScaledBernstein) -> Option<i8> {
+    let k = usize::BITS - (num.degree() + 1).leading_zeros() + 1;
+    (0..=(1u64 << k))
+        .map(|m| num.sign_at(&num_bigint::BigInt::from(m), k))
+        .find(|&s| s != 0)
 }
 
 /// A filter stage's verdict as a certificate, if it decided.
@@ -317,4 +356,49 @@ pub fn torsion_certificate(curve: &BezierCurve<3>) -> Result<Certificate, ClassA
         return Ok(c);
     }
     torsion_certificate_exact(curve)
+}
+
+#[cfg(test)]
+mod tests {
+    #![allow(clippy::unwrap_used, reason = "tests fail loudly")]
+    use super::*;
+    use num_bigint::BigInt;
+
+    /// The scaled Bernstein form of Π (aᵢ t + bᵢ) (power basis products).
+    fn product(factors: &[(i64, i64)]) -> ScaledBernstein {
+        let mut c = vec![BigInt::from(1)];
+        for &(a, b) in factors {
+            let mut next = vec![BigInt::from(0); c.len() + 1];
+            for (j, x) in c.iter().enumerate() {
+                next[j] += x * b;
+                next[j + 1] += x * a;
+            }
+            c = next;
+        }
+        crate::squarefree::from_power(&c)
+    }
+
+    #[test]
+    fn double_roots_are_resolved_by_the_odd_part() {
+        // (3t − 1)²(t + 2) ≥ 0 with a double root at the non-dyadic 1/3: subdivision alone
+        // cannot settle it, the odd part (t + 2) can.
+        let f = product(&[(3, -1), (3, -1), (1, 2)]);
+        assert!(matches!(sign_profile(&f), SignProfile::Undecided { .. }));
+        assert_eq!(double_roots(&f), Some(Monotonicity::Increasing));
+        let g = product(&[(3, -1), (3, -1), (-1, -2)]);
+        assert_eq!(double_roots(&g), Some(Monotonicity::Decreasing));
+        // (3t − 1)²(5t − 2)(t + 2): the sign change at 2/5 is found and confirmed on N.
+        let h = product(&[(3, -1), (3, -1), (5, -2), (1, 2)]);
+        match double_roots(&h) {
+            Some(Monotonicity::NotMonotone { bracket, .. }) => {
+                assert!(bracket.0 < 0.4 && 0.4 < bracket.1 && bracket.1 - bracket.0 < 1e-11);
+            }
+            v => panic!("{v:?}"),
+        }
+        // Through `decide`: the numerator with the double root is proven, not `Undecided`.
+        let regular = product(&[]);
+        let cert = decide(&f, &regular, "test").unwrap();
+        assert_eq!(cert.verdict, Monotonicity::Increasing);
+        assert_eq!(cert.proof, Proof::Exact);
+    }
 }

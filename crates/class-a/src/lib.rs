@@ -44,6 +44,7 @@ mod sign;
 mod spatial;
 mod spiral;
 mod square;
+mod squarefree;
 
 #[cfg(feature = "paper")]
 pub mod cases;

@@ -217,9 +217,10 @@ fn witness_if_one_signed(f: &ScaledBernstein, p: &Piece, want: i8, mixed: bool) 
     }
 }
 
-/// Narrows a proven sign change by exact bisection: returns (lo, hi), lo < hi, dyadic end
-/// points rounded to f64, with f of opposite strict signs at the two exact end points, of width
-/// at most 2⁻⁴⁰ unless a midpoint is a zero of f (then the neighbouring dyadics are tried).
+/// Narrows a proven sign change: returns (lo, hi), lo < hi, dyadic end points (level ≤ 48,
+/// exact in f64), with f of opposite strict signs at the two exact end points, of width 2⁻⁴¹
+/// when the f64 guess is confirmed ([`confirmed_guess`]), else by exact bisection of width at
+/// most 2⁻³⁹ unless a midpoint is a zero of f (then the neighbouring dyadics are tried).
 pub(crate) fn locate_sign_change(
     f: &ScaledBernstein,
     positive: &Dyadic,

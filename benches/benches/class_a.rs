@@ -5,8 +5,8 @@ use std::hint::black_box;
 use std::time::Instant;
 
 use class_a::{
-    TypicalPlanar, TypicalSpatial, cases, curvature_certificate, curvature_samples, log_graph,
-    planar_nelder_mead, torsion_certificate, torsion_samples,
+    TypicalPlanar, TypicalSpatial, cases, curvature_certificate, planar_nelder_mead,
+    torsion_certificate,
 };
 use criterion::{BenchmarkId, Criterion, criterion_group, criterion_main};
 
@@ -118,10 +118,10 @@ fn certificate_worst_case(c: &mut Criterion) {
 }
 
 /// A recorded drag: 1,000 steps of the end point α₃ (spatial) or α₂ (planar) on a seeded random
-/// walk of 0.5 % of the chord per step from the Fig. 8 / Fig. 6 points. Each frame: the curve
-/// (spatial: continued from the last frame by `TypicalSpatial::update`), its certificate
-/// (torsion certificate; planar: the exact condition (4) margin) and the LTG / LCG slope of
-/// 17 samples. The whole replay (time / 1000 is the mean frame) and its slowest frame.
+/// walk of 0.5 % of the chord per step from the Fig. 8 / Fig. 6 points. Each frame is one
+/// `edit`: the curve (spatial: continued from the last frame by `TypicalSpatial::update`), its
+/// proven certificate (torsion; planar: curvature) and the LTG / LCG slope of 17 samples. The
+/// whole replay (time / 1000 is the mean frame) and its slowest frame.
 fn drag(c: &mut Criterion) {
     let mut seed = 2014u64;
     let mut step = move || {
@@ -146,33 +146,17 @@ fn drag(c: &mut Criterion) {
         next[2] += bez_core::Vector2::new(step(), step()) * scale;
         planar.push(next);
     }
+    // `edit`: the solution, its curve, the certificate and the LTG / LCG slope of 17 samples.
     let spatial_frame = |last: &TypicalSpatial, a: &[bez_core::Vector3; 4]| {
-        let t = last.update(a).unwrap_or(*last);
-        let certified = t
-            .curve()
-            .ok()
-            .and_then(|c| torsion_certificate(&c).ok().map(|k| k.is_monotone()))
-            .unwrap_or(false);
-        let slope = t
-            .curve()
-            .ok()
-            .and_then(|c| torsion_samples(&c, 17).ok())
-            .and_then(|s| log_graph(&s).ok())
-            .map(|g| g.slope);
-        (t, certified, slope)
+        last.edit(a).map_or((*last, false, None), |f| {
+            let certified = f.certificate.is_ok_and(|c| c.is_monotone());
+            (f.solution, certified, f.slope)
+        })
     };
     let planar_frame = |a: &[bez_core::Vector2; 3]| {
-        TypicalPlanar::from_points(&a[0], &a[1], &a[2], 49)
+        TypicalPlanar::edit(&a[0], &a[1], &a[2], 49)
             .ok()
-            .map(|t| {
-                let slope = t
-                    .curve()
-                    .ok()
-                    .and_then(|c| curvature_samples(&c, 17).ok())
-                    .and_then(|s| log_graph(&s).ok())
-                    .map(|g| g.slope);
-                (t.margin() >= 0.0, slope)
-            })
+            .map(|f| (f.certificate.is_ok_and(|c| c.is_monotone()), f.slope))
     };
     let Ok(start) = TypicalSpatial::from_points(&spatial[0], 7) else {
         return;

@@ -8,6 +8,7 @@
 use bez_core::BezierCurve;
 
 use crate::ClassAError;
+use crate::dd::Dd;
 use crate::exact::{ScaledBernstein, to_common_integers};
 use crate::filter::Filtered;
 use crate::sign::{Positivity, SignProfile, locate_sign_change, positivity, sign_profile};
@@ -59,6 +60,9 @@ pub enum Proof {
     /// The floating-point filter: f64 coefficients whose signs exceed a rigorous rounding-error
     /// bound (the common case, no big integers formed).
     Filter,
+    /// The filter's second stage: the same bound in double-double arithmetic (about 106
+    /// significant bits), for numerators that cancel below f64 resolution.
+    DoubleDouble,
     /// Exact integer arithmetic (the filter could not decide).
     Exact,
 }
@@ -218,10 +222,10 @@ fn decide(
                 bracket: (lo, hi),
             }
         }
-        SignProfile::Undecided { lo, hi } => Monotonicity::Undecided {
+        SignProfile::Undecided { lo, hi } => double_roots(num).unwrap_or(Monotonicity::Undecided {
             cause: UndecidedCause::Sign,
             interval: (lo, hi),
-        },
+        }),
     };
     Ok(Certificate {
         verdict,
@@ -230,8 +234,47 @@ fn decide(
     })
 }
 
-/// The filter's verdict as a certificate, if it decided.
-fn filtered(f: Filtered) -> Option<Certificate> {
+/// The verdict for a numerator whose subdivision did not settle (a double root, or a root
+/// within 2⁻⁹⁶ of a piece boundary), from the odd part O of its square-free decomposition
+/// (module `squarefree`): O of one sign gives N's sign (read at a dyadic point where N ≠ 0);
+/// a proven sign change of O, bracketed and confirmed by exact values of N of opposite signs
+/// at the bracket's dyadic ends, is an interior extremum. `None` when neither is proven.
+fn double_roots(num: &ScaledBernstein) -> Option<Monotonicity> {
+    let odd = crate::squarefree::odd_part(num)?;
+    match sign_profile(&odd) {
+        SignProfile::NonNegative | SignProfile::NonPositive => match nonzero_sign(num)? {
+            1 => Some(Monotonicity::Increasing),
+            _ => Some(Monotonicity::Decreasing),
+        },
+        SignProfile::Changes { positive, negative } => {
+            let (lo, hi) = locate_sign_change(&odd, &positive, &negative);
+            // The bracket's ends are dyadic of level ≤ 48, exact in f64.
+            let level = 48;
+            let at = |x: f64| {
+                let m = x * 2f64.powi(level);
+                (m.fract() == 0.0 && (0.0..=2f64.powi(level)).contains(&m))
+                    .then(|| num.sign_at(&num_bigint::BigInt::from(m as u64), level as u32))
+            };
+            (at(lo)? * at(hi)? == -1).then_some(Monotonicity::NotMonotone {
+                extremum: 0.5 * (lo + hi),
+                bracket: (lo, hi),
+            })
+        }
+        SignProfile::Zero | SignProfile::Undecided { .. } => None,
+    }
+}
+
+/// The sign of N at some dyadic point where N ≠ 0 (N has at most deg N zeros, so one of
+/// 2ᵏ + 1 > deg N + 1 points of level k is not a zero); `None` for N ≡ 0.
+fn nonzero_sign(num: &ScaledBernstein) -> Option<i8> {
+    let k = usize::BITS - (num.degree() + 1).leading_zeros() + 1;
+    (0..=(1u64 << k))
+        .map(|m| num.sign_at(&num_bigint::BigInt::from(m), k))
+        .find(|&s| s != 0)
+}
+
+/// A filter stage's verdict as a certificate, if it decided.
+fn filtered(f: Filtered, proof: Proof) -> Option<Certificate> {
     let verdict = match f {
         Filtered::Increasing => Monotonicity::Increasing,
         Filtered::Decreasing => Monotonicity::Decreasing,
@@ -241,7 +284,7 @@ fn filtered(f: Filtered) -> Option<Certificate> {
     Some(Certificate {
         verdict,
         by_coefficient_signs: true,
-        proof: Proof::Filter,
+        proof,
     })
 }
 
@@ -266,8 +309,9 @@ pub(crate) fn torsion_certificate_exact(
 /// First a floating-point filter (module docs of `filter`: the same numerator in f64 with a
 /// rigorous bound on every coefficient's rounding error) decides the common case, where the
 /// regularity polynomial and the numerator have coefficients of proven sign
-/// ([`Proof::Filter`]); otherwise the exact path below decides ([`Proof::Exact`]). Both give
-/// the same verdict (tested).
+/// ([`Proof::Filter`]); then the same filter in double-double arithmetic, for numerators that
+/// cancel below f64 resolution ([`Proof::DoubleDouble`]); otherwise the exact path below
+/// decides ([`Proof::Exact`]). All give the same verdict (tested).
 ///
 /// κ² = G/P³ with P = |x'|² and G = |x' × x''|², so d(κ²)/dt = N/P⁴ with N = G'P − 3GP'
 /// ([`curvature_numerator`]), formed exactly in integers. Regularity P > 0 on [0, 1] is proven
@@ -282,10 +326,17 @@ pub fn curvature_certificate<const D: usize>(
     curve: &BezierCurve<D>,
 ) -> Result<Certificate, ClassAError> {
     crate::error::check_degree(curve.degree(), 2)?;
-    match filtered(crate::filter::curvature(curve)) {
-        Some(c) => Ok(c),
-        None => curvature_certificate_exact(curve),
+    if let Some(c) =
+        filtered(crate::filter::curvature::<f64, D>(curve), Proof::Filter).or_else(|| {
+            filtered(
+                crate::filter::curvature::<Dd, D>(curve),
+                Proof::DoubleDouble,
+            )
+        })
+    {
+        return Ok(c);
     }
+    curvature_certificate_exact(curve)
 }
 
 /// Proven certificate of monotone torsion of a spatial curve of any degree.
@@ -299,8 +350,55 @@ pub fn curvature_certificate<const D: usize>(
 /// [`ClassAError::Singular`] when x' × x'' = 0 at an exact dyadic parameter.
 pub fn torsion_certificate(curve: &BezierCurve<3>) -> Result<Certificate, ClassAError> {
     crate::error::check_degree(curve.degree(), 3)?;
-    match filtered(crate::filter::torsion(curve)) {
-        Some(c) => Ok(c),
-        None => torsion_certificate_exact(curve),
+    if let Some(c) = filtered(crate::filter::torsion::<f64>(curve), Proof::Filter)
+        .or_else(|| filtered(crate::filter::torsion::<Dd>(curve), Proof::DoubleDouble))
+    {
+        return Ok(c);
+    }
+    torsion_certificate_exact(curve)
+}
+
+#[cfg(test)]
+mod tests {
+    #![allow(clippy::unwrap_used, reason = "tests fail loudly")]
+    use super::*;
+    use num_bigint::BigInt;
+
+    /// The scaled Bernstein form of Π (aᵢ t + bᵢ) (power basis products).
+    fn product(factors: &[(i64, i64)]) -> ScaledBernstein {
+        let mut c = vec![BigInt::from(1)];
+        for &(a, b) in factors {
+            let mut next = vec![BigInt::from(0); c.len() + 1];
+            for (j, x) in c.iter().enumerate() {
+                next[j] += x * b;
+                next[j + 1] += x * a;
+            }
+            c = next;
+        }
+        crate::squarefree::from_power(&c)
+    }
+
+    #[test]
+    fn double_roots_are_resolved_by_the_odd_part() {
+        // (3t − 1)²(t + 2) ≥ 0 with a double root at the non-dyadic 1/3: subdivision alone
+        // cannot settle it, the odd part (t + 2) can.
+        let f = product(&[(3, -1), (3, -1), (1, 2)]);
+        assert!(matches!(sign_profile(&f), SignProfile::Undecided { .. }));
+        assert_eq!(double_roots(&f), Some(Monotonicity::Increasing));
+        let g = product(&[(3, -1), (3, -1), (-1, -2)]);
+        assert_eq!(double_roots(&g), Some(Monotonicity::Decreasing));
+        // (3t − 1)²(5t − 2)(t + 2): the sign change at 2/5 is found and confirmed on N.
+        let h = product(&[(3, -1), (3, -1), (5, -2), (1, 2)]);
+        match double_roots(&h) {
+            Some(Monotonicity::NotMonotone { bracket, .. }) => {
+                assert!(bracket.0 < 0.4 && 0.4 < bracket.1 && bracket.1 - bracket.0 < 1e-11);
+            }
+            v => panic!("{v:?}"),
+        }
+        // Through `decide`: the numerator with the double root is proven, not `Undecided`.
+        let regular = product(&[]);
+        let cert = decide(&f, &regular, "test").unwrap();
+        assert_eq!(cert.verdict, Monotonicity::Increasing);
+        assert_eq!(cert.proof, Proof::Exact);
     }
 }

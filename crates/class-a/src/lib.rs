@@ -30,6 +30,8 @@
 
 mod certificate;
 mod curve;
+mod dd;
+mod edit;
 mod end_curvature;
 mod error;
 mod exact;
@@ -45,6 +47,7 @@ mod spatial;
 mod spiral;
 mod spline;
 mod square;
+mod squarefree;
 
 #[cfg(feature = "paper")]
 pub mod cases;
@@ -54,6 +57,7 @@ pub use crate::certificate::{
     torsion_certificate, torsion_numerator,
 };
 pub use crate::curve::{ClassACurve, class_a_curve};
+pub use crate::edit::{EditFrame, FRAME_SAMPLES};
 pub use crate::end_curvature::{end_curvatures, end_curvatures_torsions};
 pub use crate::error::{ClassAError, MAX_DEGREE};
 pub use crate::exact::ScaledBernstein;

@@ -217,14 +217,20 @@ fn witness_if_one_signed(f: &ScaledBernstein, p: &Piece, want: i8, mixed: bool) 
     }
 }
 
-/// Narrows a proven sign change by exact bisection: returns (lo, hi), lo < hi, dyadic end
-/// points rounded to f64, with f of opposite strict signs at the two exact end points, of width
-/// at most 2⁻⁴⁰ unless a midpoint is a zero of f (then the neighbouring dyadics are tried).
+/// Narrows a proven sign change: returns (lo, hi), lo < hi, dyadic end points (level ≤ 48,
+/// exact in f64), with f of opposite strict signs at the two exact end points, of width 2⁻⁴¹
+/// when the f64 guess is confirmed ([`confirmed_guess`]), else by exact bisection of width at
+/// most 2⁻³⁹ unless a midpoint is a zero of f (then the neighbouring dyadics are tried).
 pub(crate) fn locate_sign_change(
     f: &ScaledBernstein,
     positive: &Dyadic,
     negative: &Dyadic,
 ) -> (f64, f64) {
+    confirmed_guess(f, positive, negative).unwrap_or_else(|| bisect(f, positive, negative))
+}
+
+/// [`locate_sign_change`] by exact bisection only.
+fn bisect(f: &ScaledBernstein, positive: &Dyadic, negative: &Dyadic) -> (f64, f64) {
     let mut j = positive.j.max(negative.j);
     let (mut a, mut b) = (positive.at_level(j), negative.at_level(j)); // f(a) > 0 > f(b)
     while j < LOCATE_LEVEL + 8 {
@@ -260,6 +266,81 @@ pub(crate) fn locate_sign_change(
     }
     let (x, y) = (Dyadic::new(a, j).to_f64(), Dyadic::new(b, j).to_f64());
     (x.min(y), x.max(y))
+}
+
+/// Level of the dyadic points of a guessed bracket (three steps of 2⁻⁴² wide, under 2⁻⁴⁰).
+const GUESS_LEVEL: u32 = 42;
+
+/// The fast path of [`locate_sign_change`]: a root between the two points found by f64
+/// bisection (de Casteljau evaluation of the rounded coefficients), then bracketed by the
+/// dyadic points r ∓ 2⁻⁴¹ (level 42) whose signs are checked exactly; `None` when f64 cannot
+/// follow the sign or a check fails (the exact bisection then decides).
+fn confirmed_guess(
+    f: &ScaledBernstein,
+    positive: &Dyadic,
+    negative: &Dyadic,
+) -> Option<(f64, f64)> {
+    let b = rounded_bernstein(f)?;
+    let (mut lo, mut hi) = (positive.to_f64(), negative.to_f64()); // f(lo) > 0 > f(hi)
+    let mut scratch = b.clone();
+    for _ in 0..64 {
+        let mid = 0.5 * (lo + hi);
+        if mid == lo || mid == hi {
+            break;
+        }
+        let v = de_casteljau(&b, mid, &mut scratch);
+        if v > 0.0 {
+            lo = mid;
+        } else if v < 0.0 {
+            hi = mid;
+        } else {
+            break;
+        }
+    }
+    let scale = f64::from(1u32 << 21) * f64::from(1u32 << 21); // 2⁴²
+    let r = (0.5 * (lo + hi) * scale).round();
+    let (left, right) = (r - 1.0, r + 1.0);
+    if left < 0.0 || right > scale {
+        return None;
+    }
+    let (pos, neg) = if positive.to_f64() < negative.to_f64() {
+        (left, right)
+    } else {
+        (right, left)
+    };
+    // Exact integers below 2⁵³, so the conversions are exact.
+    let (pm, nm) = (BigInt::from(pos as u64), BigInt::from(neg as u64));
+    (f.sign_at(&pm, GUESS_LEVEL) > 0 && f.sign_at(&nm, GUESS_LEVEL) < 0)
+        .then_some((left / scale, right / scale))
+}
+
+/// The Bernstein coefficients of f rounded to f64 (after one common power-of-two scaling),
+/// `None` when they do not fit.
+fn rounded_bernstein(f: &ScaledBernstein) -> Option<Vec<f64>> {
+    let a = f.coefficients();
+    let n = a.len() - 1;
+    let bits = a.iter().map(BigInt::bits).max()?;
+    let shift = bits.saturating_sub(960);
+    let mut c = 1.0f64; // C(n, k), rounded
+    let mut out = Vec::with_capacity(n + 1);
+    for (k, x) in a.iter().enumerate() {
+        let v = (x >> shift).to_f64()? / c;
+        out.push(v);
+        c = c * (n - k) as f64 / (k + 1) as f64;
+    }
+    out.iter().all(|v| v.is_finite()).then_some(out)
+}
+
+/// The value Σ bₖ Bₖᴺ(t) by de Casteljau's algorithm (`scratch` of the same length).
+fn de_casteljau(b: &[f64], t: f64, scratch: &mut [f64]) -> f64 {
+    scratch.copy_from_slice(b);
+    let n = b.len();
+    for r in 1..n {
+        for i in 0..n - r {
+            scratch[i] = (1.0 - t) * scratch[i] + t * scratch[i + 1];
+        }
+    }
+    scratch[0]
 }
 
 /// What the subdivision proved about strict positivity of f on [0, 1] (regularity checks).
@@ -357,6 +438,42 @@ mod tests {
         // 1 + t(1−t)·(−8) dips below zero around 1/2 without sign change at the ends.
         let g = poly(&[1, -6, 1]);
         assert!(matches!(sign_profile(&g), SignProfile::Changes { .. }));
+    }
+
+    /// Exact signs (at the dyadic end points, level ≤ 48) of a bracket: opposite and strict,
+    /// and the width at most 2⁻³⁹ (the exact bisection stops between 2⁻⁴¹ and 2⁻³⁹).
+    fn opposite_exact_signs(f: &ScaledBernstein, (lo, hi): (f64, f64)) -> bool {
+        let at = |x: f64| f.sign_at(&BigInt::from((x * 2f64.powi(48)) as u64), 48);
+        hi - lo <= 2f64.powi(-39) && at(lo) * at(hi) == -1
+    }
+
+    #[test]
+    fn guessed_and_bisected_brackets_are_both_proven() {
+        // (1 − 3t)(2 − 7t)(5 + t²)-like products: roots 1/3 and 2/7, not dyadic.
+        let lin = |a: i64, b: i64| poly(&[a, a - b]); // a(1 − t) + (a − b)t = a − bt
+        let f = lin(1, 3).mul(&lin(2, 7)).mul(&poly(&[5, 5, 6]));
+        for (p, n) in [
+            (Dyadic::new(0.into(), 0), Dyadic::new(5.into(), 4)),
+            (Dyadic::new(1.into(), 0), Dyadic::new(5.into(), 4)),
+        ] {
+            let fast = confirmed_guess(&f, &p, &n).unwrap();
+            let slow = bisect(&f, &p, &n);
+            assert!(opposite_exact_signs(&f, fast), "{fast:?}");
+            assert!(opposite_exact_signs(&f, slow), "{slow:?}");
+            let root = if p.j == 0 && p.m == BigInt::from(0) {
+                2.0 / 7.0
+            } else {
+                1.0 / 3.0
+            };
+            for (lo, hi) in [fast, slow] {
+                assert!(lo < root && root < hi, "{lo} {hi}");
+            }
+        }
+        // Coefficients beyond f64 (2¹²⁰⁰): the guess declines, bisection decides.
+        let big = BigInt::from(1) << 1200u32;
+        let g = ScaledBernstein::new(vec![big.clone(), -big * 2]);
+        let (p, n) = (Dyadic::new(0.into(), 0), Dyadic::new(1.into(), 0));
+        assert!(opposite_exact_signs(&g, locate_sign_change(&g, &p, &n)));
     }
 
     #[test]

@@ -355,21 +355,37 @@ impl TypicalSpatial {
         degree: usize,
         requirement: SpatialRequirement,
     ) -> Result<Self, ClassAError> {
-        let all = Self::candidates(a, degree)?;
-        // The least-turning Class A solution first (the smallest |θ|, then the larger margin).
-        let mut class_a: Vec<&Self> = all.iter().filter(|t| t.class_a_margin() >= 0.0).collect();
-        class_a.sort_by(|x, y| {
-            x.theta
-                .abs()
-                .total_cmp(&y.theta.abs())
-                .then(y.class_a_margin().total_cmp(&x.class_a_margin()))
-        });
+        let setup = Setup::new(a, degree)?;
+        let (lo, hi) = (*setup.branches().start(), *setup.branches().end());
+        let mut all: Vec<Self> = Vec::new();
+        let mut best_res = f64::INFINITY;
+        // Branches k and −1 − k turn by |θ| ∈ (mτ, (m + 1)τ), τ = 2π/(n − 1), m = max(k, −1 − k):
+        // searched by increasing m, the least-turning qualifying candidate is final as soon as
+        // its |θ| ≤ (m + 1)τ (every later branch turns more). −1 − m before m, as in the full
+        // search, so a rotation found on both is kept in the same representation.
+        let step = TAU / (degree - 1) as f64;
+        for m in 0i64.. {
+            let group: Vec<i64> = [-1 - m, m]
+                .into_iter()
+                .filter(|k| (lo..=hi).contains(k))
+                .collect();
+            if group.is_empty() {
+                break;
+            }
+            Self::search(&setup, &a[0], &group, &mut all, &mut best_res)?;
+            let bound = step * (m + 1) as f64;
+            if let (Some(t), _) = Self::select(a, &all, requirement)
+                && t.theta.abs() <= bound
+            {
+                return Ok(t);
+            }
+        }
+        all.sort_by(|x, y| y.class_a_margin().total_cmp(&x.class_a_margin()));
         let Some(best) = all.first() else {
-            return Err(ClassAError::ChordUnreachable {
-                residual: f64::INFINITY,
-            });
+            return Err(ClassAError::ChordUnreachable { residual: best_res });
         };
-        if class_a.is_empty() {
+        let class_a = all.iter().filter(|t| t.class_a_margin() >= 0.0).count();
+        if class_a == 0 {
             return Err(ClassAError::NoClassASolution {
                 converged: all.len(),
                 best_margin: best.class_a_margin(),
@@ -377,17 +393,40 @@ impl TypicalSpatial {
                 theta: best.theta,
             });
         }
+        match Self::select(a, &all, requirement) {
+            (Some(t), _) => Ok(t),
+            (None, Some(e)) => Err(e),
+            (None, None) => Err(ClassAError::NoMonotoneTorsion { class_a }),
+        }
+    }
+
+    /// The first of the Class A candidates (by increasing |θ|, then decreasing margin) that
+    /// meets the requirement and whose control points pass [`Interpolation`] at
+    /// [`INTERPOLATION_TOLERANCE`]; else the first interpolation error of a candidate that met
+    /// the requirement, if any.
+    fn select(
+        a: &[Vector3; 4],
+        all: &[Self],
+        requirement: SpatialRequirement,
+    ) -> (Option<Self>, Option<ClassAError>) {
+        let mut class_a: Vec<&Self> = all.iter().filter(|t| t.class_a_margin() >= 0.0).collect();
+        class_a.sort_by(|x, y| {
+            x.theta
+                .abs()
+                .total_cmp(&y.theta.abs())
+                .then(y.class_a_margin().total_cmp(&x.class_a_margin()))
+        });
         let mut first_error = None;
-        let mut qualified = 0usize;
-        for t in class_a.iter().copied() {
-            let curve = t.curve()?;
+        for t in class_a {
+            let Ok(curve) = t.curve() else {
+                continue;
+            };
             if requirement == SpatialRequirement::MonotoneTorsion
                 && !t.torsion_condition()
                 && !crate::torsion_certificate(&curve).is_ok_and(|c| c.is_monotone())
             {
                 continue;
             }
-            qualified += 1;
             match Interpolation::measure(
                 curve.points(),
                 &a[0],
@@ -397,18 +436,13 @@ impl TypicalSpatial {
             )
             .within(INTERPOLATION_TOLERANCE)
             {
-                Ok(_) => return Ok(*t),
+                Ok(_) => return (Some(*t), None),
                 Err(e) => {
                     first_error.get_or_insert(e);
                 }
             }
         }
-        match first_error {
-            Some(e) if qualified > 0 => Err(e),
-            _ => Err(ClassAError::NoMonotoneTorsion {
-                class_a: class_a.len(),
-            }),
-        }
+        (None, first_error)
     }
 
     /// The least-turning Class A candidate, without the interpolation check (which
@@ -527,10 +561,29 @@ impl TypicalSpatial {
     /// As [`TypicalSpatial::from_points`], except [`ClassAError::NoClassASolution`].
     pub fn candidates(a: &[Vector3; 4], degree: usize) -> Result<Vec<Self>, ClassAError> {
         let setup = Setup::new(a, degree)?;
-        let (np, ns) = GRID;
-        let span = (LOG_RATIO_SPAN / (degree - 1) as f64).min(4.0);
         let mut found: Vec<Self> = Vec::new();
         let mut best_res = f64::INFINITY;
+        let all: Vec<i64> = setup.branches().collect();
+        Self::search(&setup, &a[0], &all, &mut found, &mut best_res)?;
+        if found.is_empty() {
+            return Err(ClassAError::ChordUnreachable { residual: best_res });
+        }
+        found.sort_by(|x, y| y.class_a_margin().total_cmp(&x.class_a_margin()));
+        Ok(found)
+    }
+
+    /// The grid and Newton search of [`TypicalSpatial::candidates`] on the branches `ks`,
+    /// adding distinct converged solutions to `found` and the smallest residual to `best_res`.
+    fn search(
+        setup: &Setup,
+        a0: &Vector3,
+        ks: &[i64],
+        found: &mut Vec<Self>,
+        best_res: &mut f64,
+    ) -> Result<(), ClassAError> {
+        let degree = setup.n;
+        let (np, ns) = GRID;
+        let span = (LOG_RATIO_SPAN / (degree - 1) as f64).min(4.0);
         // Corner values of the two conditions on a (φ, log s) grid closed over the period
         // (φ = π/2 is φ = −π/2 of the same branch continued); a cell where both change sign
         // holds a crossing of their zero curves, and Newton starts at its centre.
@@ -539,7 +592,7 @@ impl TypicalSpatial {
         let ls_at = |j: usize| -span + 2.0 * span * j as f64 / (ns - 1) as f64;
         let frame = setup.chord_frame();
         let log_s: Vec<f64> = (0..ns).map(ls_at).collect();
-        for k in setup.branches() {
+        for &k in ks {
             let rows: Vec<Branch> = (0..=np).map(|i| setup.branch(phi_at(i), k)).collect();
             let thetas: Vec<f64> = rows.iter().map(|b| b.theta).collect();
             let near = |i: usize| {
@@ -595,11 +648,11 @@ impl TypicalSpatial {
                 {
                     continue;
                 }
-                let (phi, ls, r) = newton(&setup, phi, ls, k);
-                best_res = best_res.min(r);
+                let (phi, ls, r) = newton(setup, phi, ls, k);
+                *best_res = best_res.min(r);
                 if r <= CONVERGED {
                     converged.push((phi, ls));
-                    let t = setup.finish(&a[0], phi, ls, k)?;
+                    let t = setup.finish(a0, phi, ls, k)?;
                     let duplicate = found.iter().any(|f| {
                         (f.axis * f.theta - t.axis * t.theta).norm() <= 1e-9
                             && (f.s / t.s - 1.0).abs() <= 1e-9
@@ -610,11 +663,7 @@ impl TypicalSpatial {
                 }
             }
         }
-        if found.is_empty() {
-            return Err(ClassAError::ChordUnreachable { residual: best_res });
-        }
-        found.sort_by(|x, y| y.class_a_margin().total_cmp(&x.class_a_margin()));
-        Ok(found)
+        Ok(())
     }
 
     /// The paper's method: Nelder–Mead (argmin) on (φ, s) minimizing −f of eq. (15),

@@ -9,8 +9,8 @@
 
 use bez_core::{BezierCurve, BezierForm, Vector2, Vector3};
 use class_a::{
-    Certificate, ClassACurve, ClassAError, ClassAReport, ClassASpline, Condition,
-    INTERPOLATION_TOLERANCE, Interpolation, Knot, LogGraph, MAX_KNOTS, MAX_PIECES,
+    Certificate, ClassACurve, ClassAError, ClassAReport, ClassASpline, Condition, EditFrame,
+    FRAME_SAMPLES, INTERPOLATION_TOLERANCE, Interpolation, Knot, LogGraph, MAX_KNOTS, MAX_PIECES,
     MAX_SUBDIVISION_DEPTH, Matrix, Matrix2, Matrix3, Monotonicity, PlanarFeasibility,
     PlanarGeometry, Proof, SUBCURVE_SAMPLES, ScaledBernstein, SpatialRequirement, TypicalPlanar,
     TypicalSpatial, UndecidedCause, apollonius_pole, class_a_curve, curvature_certificate,
@@ -70,6 +70,12 @@ proptest! {
             let _ = tp.margin();
             let _ = tp.log_curvature_point(t);
         }
+        let frame: Result<EditFrame<TypicalPlanar, 2>, ClassAError> = TypicalPlanar::edit(&a0, &a1, &a2, n);
+        if let Ok(f) = frame {
+            prop_assert!(finite_curve(&f.curve) && f.solution.s().is_finite());
+            prop_assert!(f.slope.is_none_or(f64::is_finite));
+            if let Ok(cert) = f.certificate { let _ = cert.is_monotone(); }
+        }
         if let Ok((_, c, _)) = TypicalPlanar::generate(&a0, &a1, &a2, n, 1e-9) {
             prop_assert!(finite_curve(&c));
         }
@@ -117,6 +123,10 @@ proptest! {
                 let _ = ts.torsion_condition();
                 if let Ok(next) = ts.update(&a) {
                     prop_assert!(next.s.is_finite() && next.theta.is_finite());
+                }
+                if let Ok(f) = ts.edit(&a) {
+                    prop_assert!(finite_curve(&f.curve) && f.solution.s.is_finite());
+                    prop_assert!(f.slope.is_none_or(f64::is_finite));
                 }
             }
         }
@@ -284,6 +294,7 @@ fn spline_knot_count_is_bounded() {
 #[test]
 fn limits_are_stated() {
     const { assert!(MAX_PIECES > 0 && MAX_SUBDIVISION_DEPTH > 0 && SUBCURVE_SAMPLES > 0) };
+    const { assert!(FRAME_SAMPLES >= 2) };
     let r = ClassAReport::of_2x2(&Matrix2::identity()).unwrap();
     let c: Condition = r.farin3;
     assert!(c.holds);

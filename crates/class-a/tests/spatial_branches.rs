@@ -153,3 +153,49 @@ fn a_drag_is_followed_by_continuation() {
         t = next;
     }
 }
+
+/// `solve` searches the branches by increasing turn and stops at the first that settles the
+/// answer; the result must be the one a selection from the full candidate list gives.
+#[test]
+fn the_early_stop_returns_the_full_search_answer() {
+    use class_a::{INTERPOLATION_TOLERANCE, Interpolation, SpatialRequirement};
+    let mut rng = Rng(41);
+    for _ in 0..120 {
+        let (a, n, _, _) = random_curve(&mut rng);
+        let all = TypicalSpatial::candidates(&a, n).unwrap();
+        let mut class_a: Vec<&TypicalSpatial> =
+            all.iter().filter(|t| t.class_a_margin() >= 0.0).collect();
+        class_a.sort_by(|x, y| {
+            x.theta
+                .abs()
+                .total_cmp(&y.theta.abs())
+                .then(y.class_a_margin().total_cmp(&x.class_a_margin()))
+        });
+        for requirement in [
+            SpatialRequirement::ClassA,
+            SpatialRequirement::MonotoneTorsion,
+        ] {
+            let want = class_a.iter().find(|t| {
+                let c = t.curve().unwrap();
+                let torsion_ok = requirement == SpatialRequirement::ClassA
+                    || t.torsion_condition()
+                    || class_a::torsion_certificate(&c).is_ok_and(|k| k.is_monotone());
+                torsion_ok
+                    && Interpolation::measure(
+                        c.points(),
+                        &a[0],
+                        &(a[1] - a[0]),
+                        &(a[3] - a[2]),
+                        &a[3],
+                    )
+                    .within(INTERPOLATION_TOLERANCE)
+                    .is_ok()
+            });
+            match (TypicalSpatial::solve(&a, n, requirement), want) {
+                (Ok(got), Some(want)) => assert_eq!(&got, *want, "n = {n}"),
+                (Err(_), None) => {}
+                (got, want) => panic!("n = {n}: {got:?} vs {want:?}"),
+            }
+        }
+    }
+}

@@ -57,6 +57,7 @@ fn solver_table() -> Result<Table, DynError> {
     let (mut kappa, mut tau) = ([0usize; 4], [0usize; 4]);
     // Certificates decided by the exact path because the floating-point filter declined.
     let (mut kappa_exact, mut tau_exact) = (0usize, 0usize);
+    let (mut kappa_dd, mut tau_dd) = (0usize, 0usize);
     for (a, n) in &spatial {
         let t0 = Instant::now();
         let curve = TypicalSpatial::from_points(a, *n).and_then(|c| c.curve());
@@ -68,6 +69,8 @@ fn solver_table() -> Result<Table, DynError> {
             let (k, t) = (curvature_certificate(c), torsion_certificate(c));
             kappa_exact += usize::from(exact(&k));
             tau_exact += usize::from(exact(&t));
+            kappa_dd += usize::from(double_double(&k));
+            tau_dd += usize::from(double_double(&t));
             kappa[outcome(&k)] += 1;
             tau[outcome(&t)] += 1;
         }
@@ -135,7 +138,7 @@ fn solver_table() -> Result<Table, DynError> {
     writeln!(md)?;
     writeln!(
         md,
-        "Exact fallback of the certificates (the floating-point filter could not decide): curvature {kappa_exact} of {INPUTS}, torsion {tau_exact} of {INPUTS}."
+        "Exact fallback of the certificates (neither the f64 nor the double-double filter stage decided): curvature {kappa_exact} of {INPUTS}, torsion {tau_exact} of {INPUTS}; decided by the double-double stage: curvature {kappa_dd}, torsion {tau_dd}."
     )?;
     Ok(Table {
         name: "class-a-solvers".into(),
@@ -146,6 +149,7 @@ fn solver_table() -> Result<Table, DynError> {
             "spatial_ours": ours_s, "spatial_nelder_mead": nm_s,
             "spatial_curvature_outcomes": kappa, "spatial_torsion_outcomes": tau,
             "spatial_curvature_exact_fallback": kappa_exact, "spatial_torsion_exact_fallback": tau_exact,
+            "spatial_curvature_double_double": kappa_dd, "spatial_torsion_double_double": tau_dd,
         }),
     })
 }
@@ -213,7 +217,12 @@ fn outcome(c: &Result<class_a::Certificate, class_a::ClassAError>) -> usize {
 
 /// The certificate was decided by the exact path (or failed).
 fn exact(c: &Result<class_a::Certificate, class_a::ClassAError>) -> bool {
-    !matches!(c, Ok(c) if c.proof == class_a::Proof::Filter)
+    !matches!(c, Ok(c) if matches!(c.proof, class_a::Proof::Filter | class_a::Proof::DoubleDouble))
+}
+
+/// The certificate was decided by the double-double filter stage.
+fn double_double(c: &Result<class_a::Certificate, class_a::ClassAError>) -> bool {
+    matches!(c, Ok(c) if c.proof == class_a::Proof::DoubleDouble)
 }
 
 fn verdict(c: Result<class_a::Certificate, class_a::ClassAError>) -> String {

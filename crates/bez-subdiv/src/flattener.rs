@@ -294,16 +294,22 @@ fn stream_paper_rule(
 /// Curves whose largest coordinate lies within 2^±`UNIT_EXPONENT_RANGE` are flattened as they
 /// are; others are first scaled by a power of two (see [`Flattener::flatten`]).
 const UNIT_EXPONENT_RANGE: i32 = 128;
+/// 2^−[`UNIT_EXPONENT_RANGE`] and 2^[`UNIT_EXPONENT_RANGE`].
+const UNIT_LOW: f64 = 1.0 / UNIT_HIGH;
+const UNIT_HIGH: f64 = 340_282_366_920_938_463_463_374_607_431_768_211_456.0;
 
 /// The power of two to divide `bezier` by before flattening, when its largest coordinate is
 /// outside 2^±[`UNIT_EXPONENT_RANGE`] (`None` inside, and for a curve at the origin).
+#[inline]
 fn unit_exponent(bezier: &BezierCurve<2>) -> Option<i32> {
     let size = bezier
         .points()
         .iter()
         .map(Vector2::amax)
         .fold(0.0, f64::max);
-    if size == 0.0 || !size.is_finite() {
+    // Within 2^±UNIT_EXPONENT_RANGE the rounded exponent below is within the range too: no
+    // logarithm on the usual path.
+    if size == 0.0 || !size.is_finite() || (UNIT_LOW..=UNIT_HIGH).contains(&size) {
         return None;
     }
     let exponent = size.log2().round();

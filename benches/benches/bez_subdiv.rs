@@ -1,5 +1,5 @@
 //! bez-subdiv: flattening with each split rule; cubics beside kurbo's and lyon_geom's flattening;
-//! degree 25 per output point.
+//! quadratics beside lyon_geom's; degree 25 per output point.
 #![allow(missing_docs, reason = "criterion macros generate undocumented items")]
 
 use std::hint::black_box;
@@ -165,6 +165,53 @@ fn flattener_versus_peers(c: &mut Criterion) {
     g.finish();
 }
 
+/// `Method::Fast` beside lyon_geom's quadratic `for_each_flattened` (the same uniform Wang
+/// count) on three seeded random quadratics at 1e-3 and 1e-5 × the curve's size; the counts are
+/// asserted equal. Throughput: output segments.
+fn quadratics_versus_lyon(c: &mut Criterion) {
+    use lyon_geom::{QuadraticBezierSegment, point};
+    let mut g = c.benchmark_group("quadratic_flatten_vs_lyon");
+    for seed in 1..=3_u64 {
+        let curve = random_curve::<2>(2, 500 + seed);
+        let p = curve.points();
+        let lyon = QuadraticBezierSegment {
+            from: point(p[0].x(), p[0].y()),
+            ctrl: point(p[1].x(), p[1].y()),
+            to: point(p[2].x(), p[2].y()),
+        };
+        for rel in [1e-3, 1e-5] {
+            let tol = rel * bez_subdiv::curve_size(&curve);
+            let name = format!("quadratic {seed} at {rel:e}");
+            let fast = Flattener::new(tol).with_method(Method::Fast);
+            let mut points = Vec::new();
+            let Ok(segments) = fast.flatten(&curve, |q| points.push(q.point)) else {
+                continue;
+            };
+            let mut lyon_points = Vec::new();
+            lyon.for_each_flattened(tol, &mut |s| lyon_points.push(s.to));
+            assert_eq!(lyon_points.len(), segments, "{name}: lyon_geom's count");
+            g.throughput(Throughput::Elements(segments as u64));
+            g.bench_function(BenchmarkId::new("bezkit Method::Fast", &name), |b| {
+                b.iter(|| {
+                    points.clear();
+                    fast.flatten(black_box(&curve), |q| points.push(q.point))
+                });
+            });
+            g.bench_function(
+                BenchmarkId::new("lyon_geom for_each_flattened", &name),
+                |b| {
+                    b.iter(|| {
+                        lyon_points.clear();
+                        black_box(&lyon).for_each_flattened(tol, &mut |s| lyon_points.push(s.to));
+                        lyon_points.len()
+                    });
+                },
+            );
+        }
+    }
+    g.finish();
+}
+
 /// One degree-25 curve, each mode, throughput in output points (target: < 0.3 µs per point).
 fn degree_25_per_point(c: &mut Criterion) {
     let Some(curve) = bez_subdiv::cases::degree25_curve() else {
@@ -229,6 +276,7 @@ criterion_group!(
     rules,
     versus_peers,
     flattener_versus_peers,
+    quadratics_versus_lyon,
     degree_25_per_point,
     batch
 );

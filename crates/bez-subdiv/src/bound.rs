@@ -15,6 +15,7 @@ pub fn max_second_difference(curve: &BezierCurve<2>) -> f64 {
 }
 
 /// maxᵢ |Pᵢ − 2Pᵢ₊₁ + Pᵢ₊₂| of a control polygon (0 below three points).
+#[inline]
 fn second_difference_max(points: &[Vector2]) -> f64 {
     points
         .windows(3)
@@ -63,20 +64,43 @@ pub fn wang_segment_count(curve: &BezierCurve<2>, tolerance: f64) -> Result<usiz
     if !(tolerance.is_finite() && tolerance > 0.0) {
         return Err(SubdivError::InvalidTolerance { value: tolerance });
     }
-    const LIMIT: f64 = 4_503_599_627_370_496.0; // 2⁵²: every count below it is exact in f64
-    let steps = wang_steps(curve.points(), tolerance).ceil();
-    if steps.is_nan() || steps >= LIMIT {
-        return Err(SubdivError::TooManySegments {
-            tolerance,
-            limit: LIMIT as usize,
-        });
+    wang_count(curve.points(), tolerance).ok_or(SubdivError::TooManySegments {
+        tolerance,
+        limit: WANG_COUNT_LIMIT as usize,
+    })
+}
+
+/// 2⁵²: every count below it is exact in f64.
+const WANG_COUNT_LIMIT: f64 = 4_503_599_627_370_496.0;
+
+/// [`wang_segment_count`] of a control polygon for a positive `tolerance`: `None` when the
+/// count is not below 2⁵² or not a number. The ceiling is taken on the integer part (exact
+/// below 2⁵²), not by a call of `ceil`: this runs once per call of `Method::Fast`, whose
+/// whole work on a short curve is a few dozen points.
+#[inline]
+pub(crate) fn wang_count(points: &[Vector2], tolerance: f64) -> Option<usize> {
+    let steps = wang_steps(points, tolerance);
+    if steps.is_nan() || steps >= WANG_COUNT_LIMIT {
+        return None;
     }
-    // 0 ≤ steps < 2⁵²: the cast is exact.
-    Ok((steps as usize).max(1))
+    // 0 ≤ steps < 2⁵²: the truncation is exact, and so is its conversion back.
+    #[allow(
+        clippy::cast_possible_truncation,
+        clippy::cast_sign_loss,
+        reason = "0 ≤ steps < 2^52"
+    )]
+    let whole = steps as usize;
+    let count = if (whole as f64) < steps {
+        whole + 1
+    } else {
+        whole
+    };
+    Some(count.max(1))
 }
 
 /// √(n(n − 1) M / (8 tol)) for the control polygon `points` of degree n, unrounded: Wang's
 /// count before the ceiling (0 below degree 2). `tolerance` must be positive.
+#[inline]
 pub(crate) fn wang_steps(points: &[Vector2], tolerance: f64) -> f64 {
     let n = points.len().saturating_sub(1) as f64;
     let m = second_difference_max(points);
@@ -114,6 +138,31 @@ mod tests {
             Err(SubdivError::TooManySegments { .. })
         ));
         Ok(())
+    }
+
+    /// The ceiling by truncation against `f64::ceil`, on whole and fractional step counts.
+    #[test]
+    fn wang_count_is_the_ceiling_of_wang_steps() {
+        let q = [
+            Vector2::new(0.0, 0.0),
+            Vector2::new(1.0, 4.0),
+            Vector2::new(2.0, 0.0),
+        ];
+        // Wang's steps are √(2 / tol) here: whole for tol = 2 / k².
+        for k in 1..200_u32 {
+            let k = f64::from(k);
+            for tol in [
+                2.0 / (k * k),
+                2.0 / (k * k) * 0.999,
+                2.0 / (k * k) * 1.001,
+                1.0 / k,
+            ] {
+                let expected = wang_steps(&q, tol).ceil().max(1.0);
+                assert_eq!(wang_count(&q, tol), Some(expected as usize), "{tol}");
+            }
+        }
+        assert_eq!(wang_count(&q, 1e-300), None);
+        assert_eq!(wang_count(&q[..2], 1.0), Some(1));
     }
 
     #[cfg(feature = "paper")]

@@ -1,6 +1,8 @@
 //! Adaptive subdivision ("flattening") with per-piece stopping by eq. (3).
 
-use bez_core::{BezierCurve, BezierForm, Vector2, de_casteljau_halve, de_casteljau_split};
+#[cfg(feature = "paper")]
+use bez_core::BezierForm;
+use bez_core::{BezierCurve, Vector2, de_casteljau_halve, de_casteljau_split};
 
 use crate::error::SubdivError;
 use crate::measure::within_chord_line;
@@ -84,6 +86,7 @@ pub struct FlattenStats {
 }
 
 /// The result of [`flatten`].
+#[cfg(feature = "paper")]
 #[derive(Debug, Clone, PartialEq)]
 #[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 #[non_exhaustive]
@@ -157,6 +160,7 @@ pub(crate) fn validate_with_depth(
 /// [`SubdivError::Optimizer`] from an exact rule;/// [`SubdivError::DepthTooLarge`] for `max_depth` above [`MAX_FLATTEN_DEPTH`](crate::MAX_FLATTEN_DEPTH),
 /// [`SubdivError::ToleranceBelowRounding`] below 16 ulps of the largest coordinate (checked
 /// before any work).
+#[cfg(feature = "paper")]
 pub fn flatten<C: BezierForm<2> + ?Sized>(
     curve: &C,
     options: &FlattenOptions,
@@ -165,16 +169,40 @@ pub fn flatten<C: BezierForm<2> + ?Sized>(
 }
 
 /// [`flatten`] on the Bézier form (one instance for every curve type).
+#[cfg(feature = "paper")]
 fn flatten_bezier(
     curve: &BezierCurve<2>,
     options: &FlattenOptions,
 ) -> Result<Flattening, SubdivError> {
+    let mut pieces = Vec::new();
+    let stats = subdivide(curve, options, |piece| pieces.push(piece))?;
+    let mut polyline = Vec::with_capacity(pieces.len() * (curve.points().len() - 1) + 1);
+    for (k, piece) in pieces.iter().enumerate() {
+        let skip = usize::from(k > 0);
+        polyline.extend_from_slice(&piece.points[skip..]);
+    }
+    Ok(Flattening {
+        polyline,
+        pieces,
+        stats,
+    })
+}
+
+/// The subdivision of [`flatten`]: sends each final piece to `emit` as soon as it is flat, in
+/// parameter order, and returns the counts. On an error, the pieces before it have been sent.
+///
+/// # Errors
+/// As [`flatten`].
+pub(crate) fn subdivide(
+    curve: &BezierCurve<2>,
+    options: &FlattenOptions,
+    mut emit: impl FnMut(Piece),
+) -> Result<FlattenStats, SubdivError> {
     let eps = options.tolerance;
     validate_with_depth(curve, eps, options.max_depth)?;
     let n = curve.points().len();
     let size = curve_size(curve);
     let mut stats = FlattenStats::default();
-    let mut pieces = Vec::new();
     // Depth-first, left piece first, so pieces come out in parameter order.
     let mut stack = vec![(
         curve.points().to_vec(),
@@ -187,7 +215,8 @@ fn flatten_bezier(
         let flat = size == 0.0 || within_chord_line(&points, eps * size);
         if flat {
             stats.depth = stats.depth.max(depth);
-            pieces.push(Piece { t0, t1, points });
+            stats.pieces += 1;
+            emit(Piece { t0, t1, points });
             continue;
         }
         if depth >= options.max_depth {
@@ -215,17 +244,7 @@ fn flatten_bezier(
         stack.push((right, depth + 1, tm, t1, keep));
         stack.push((left, depth + 1, t0, tm, keep));
     }
-    stats.pieces = pieces.len();
-    let mut polyline = Vec::with_capacity(pieces.len() * (n - 1) + 1);
-    for (k, piece) in pieces.iter().enumerate() {
-        let skip = usize::from(k > 0);
-        polyline.extend_from_slice(&piece.points[skip..]);
-    }
-    Ok(Flattening {
-        polyline,
-        pieces,
-        stats,
-    })
+    Ok(stats)
 }
 
 #[cfg(test)]
@@ -239,15 +258,15 @@ mod tests {
             let options = FlattenOptions::default()
                 .with_tolerance(tolerance)
                 .with_max_depth(max_depth);
-            flatten(c, &options)
+            subdivide(c, &options, |_| {})
         });
     }
 
     #[test]
     fn collapsed_and_straight_curves_terminate_as_one_piece() {
         let dot = BezierCurve::new(vec![Vector2::new(3.0, 3.0); 5]).unwrap();
-        let f = flatten(&dot, &FlattenOptions::default()).unwrap();
-        assert_eq!((f.stats.pieces, f.stats.splits), (1, 0));
+        let stats = subdivide(&dot, &FlattenOptions::default(), |_| {}).unwrap();
+        assert_eq!((stats.pieces, stats.splits), (1, 0));
         let line = BezierCurve::new(vec![
             Vector2::new(0.0, 0.0),
             Vector2::new(1.0, 1.0),
@@ -255,9 +274,8 @@ mod tests {
         ])
         .unwrap();
         assert_eq!(
-            flatten(&line, &FlattenOptions::default())
+            subdivide(&line, &FlattenOptions::default(), |_| {})
                 .unwrap()
-                .stats
                 .pieces,
             1
         );

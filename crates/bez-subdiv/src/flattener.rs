@@ -4,7 +4,7 @@
 use bez_core::{BezierCurve, BezierForm, Vector2};
 
 use crate::error::SubdivError;
-use crate::flatten::{DEFAULT_MAX_DEPTH, FlattenOptions, curve_size, flatten};
+use crate::flatten::{DEFAULT_MAX_DEPTH, FlattenOptions, curve_size, subdivide};
 use crate::guaranteed::{FlatPoint, stream_guaranteed};
 use crate::local_wang::stream_local_wang;
 use crate::optimal::flatten_optimal;
@@ -17,7 +17,7 @@ use crate::wang::flatten_wang;
 /// | method | segments / N* (random cubics, tol = 1e-3 × size) | cost | use it for |
 /// |---|---|---|---|
 /// | [`Fast`](Method::Fast) | about 2 | fastest: no subdivision, a few flops per point (about 0.1 × kurbo's `flatten`) | rendering, hit testing, anything per frame |
-/// | [`Optimal`](Method::Optimal) | median 1.05, 90th percentile 1.10 | about kurbo's `flatten` on cubics (1.15 × its time on random cubics, 0.92 × on adversarial ones); about 0.5 µs per point at degree 25 | output that is stored or sent (fewest points) |
+/// | [`Optimal`](Method::Optimal) | median 1.05, 90th percentile 1.10 | about kurbo's `flatten` on cubics (1.15–1.17 × its time on random cubics, 0.92–0.94 × on adversarial ones); about 0.5 µs per point at degree 25 | output that is stored or sent (fewest points) |
 /// | [`LocalWang`](Method::LocalWang) | 1.6–2.0 | one halving per up to 16 points | high degrees |
 /// | [`Halving`](Method::Halving) | about 1.7 | one de Casteljau halving per segment | — |
 /// | [`PaperRule`](Method::PaperRule) | — | — | reproducing Ma, Lin & Shen's Table 1 only: **no guarantee** |
@@ -160,7 +160,7 @@ impl Flattener {
     fn flatten_unit(
         &self,
         bezier: &BezierCurve<2>,
-        mut sink: impl FnMut(FlatPoint),
+        sink: impl FnMut(FlatPoint),
     ) -> Result<usize, SubdivError> {
         let (tol, depth) = (self.tolerance, self.max_depth);
         match self.method {
@@ -168,13 +168,7 @@ impl Flattener {
             Method::LocalWang => stream_local_wang(bezier, tol, depth, sink),
             Method::Halving => stream_guaranteed(bezier, tol, depth, sink),
             Method::Optimal => flatten_optimal(bezier, tol, depth, sink),
-            Method::PaperRule(rule) => {
-                // Reproduction only: the paper's pieces are collected first.
-                let points = paper_rule_points(bezier, tol, rule, depth)?;
-                let segments = points.len().saturating_sub(1);
-                points.into_iter().for_each(&mut sink);
-                Ok(segments)
-            }
+            Method::PaperRule(rule) => stream_paper_rule(bezier, tol, rule, depth, sink),
         }
     }
 
@@ -260,14 +254,17 @@ impl Flattener {
     }
 }
 
-/// The paper's pieces' end points (exact curve points with their parameters).
-fn paper_rule_points<C: BezierForm<2> + ?Sized>(
-    curve: &C,
+/// The paper's rule as a [`Method`]: eq. (3) with ε = `tolerance` / size, each final piece's
+/// end point streamed to `sink` as soon as the piece is flat (the first piece's start first);
+/// returns the number of pieces.
+fn stream_paper_rule(
+    curve: &BezierCurve<2>,
     tolerance: f64,
     rule: SplitRule,
     max_depth: usize,
-) -> Result<Vec<FlatPoint>, SubdivError> {
-    let size = curve_size(curve.as_bezier());
+    mut sink: impl FnMut(FlatPoint),
+) -> Result<usize, SubdivError> {
+    let size = curve_size(curve);
     let eps = if size > 0.0 {
         tolerance / size
     } else {
@@ -277,36 +274,42 @@ fn paper_rule_points<C: BezierForm<2> + ?Sized>(
         .with_tolerance(eps)
         .with_rule(rule)
         .with_max_depth(max_depth);
-    let result = flatten(curve, &options)?;
-    let mut out = Vec::with_capacity(result.pieces.len() + 1);
-    for (k, piece) in result.pieces.iter().enumerate() {
-        if k == 0 {
-            out.push(FlatPoint {
+    let mut first = true;
+    let stats = subdivide(curve, &options, |piece| {
+        if first {
+            first = false;
+            sink(FlatPoint {
                 t: piece.t0,
                 point: piece.points[0],
             });
         }
-        out.push(FlatPoint {
+        sink(FlatPoint {
             t: piece.t1,
             point: piece.points[piece.points.len() - 1],
         });
-    }
-    Ok(out)
+    })?;
+    Ok(stats.pieces)
 }
 
 /// Curves whose largest coordinate lies within 2^±`UNIT_EXPONENT_RANGE` are flattened as they
 /// are; others are first scaled by a power of two (see [`Flattener::flatten`]).
 const UNIT_EXPONENT_RANGE: i32 = 128;
+/// 2^−[`UNIT_EXPONENT_RANGE`] and 2^[`UNIT_EXPONENT_RANGE`].
+const UNIT_LOW: f64 = 1.0 / UNIT_HIGH;
+const UNIT_HIGH: f64 = 340_282_366_920_938_463_463_374_607_431_768_211_456.0;
 
 /// The power of two to divide `bezier` by before flattening, when its largest coordinate is
 /// outside 2^±[`UNIT_EXPONENT_RANGE`] (`None` inside, and for a curve at the origin).
+#[inline]
 fn unit_exponent(bezier: &BezierCurve<2>) -> Option<i32> {
     let size = bezier
         .points()
         .iter()
         .map(Vector2::amax)
         .fold(0.0, f64::max);
-    if size == 0.0 || !size.is_finite() {
+    // Within 2^±UNIT_EXPONENT_RANGE the rounded exponent below is within the range too: no
+    // logarithm on the usual path.
+    if size == 0.0 || !size.is_finite() || (UNIT_LOW..=UNIT_HIGH).contains(&size) {
         return None;
     }
     let exponent = size.log2().round();
@@ -415,6 +418,53 @@ mod tests {
         for p in f.flatten_to_vec(c).unwrap() {
             assert!((p.point - c.eval(p.t).unwrap()).norm() < 1e-12);
         }
+    }
+
+    /// The paper's rule streams each piece's end point as the piece is found: the points are
+    /// the end points of `flatten`'s pieces (computed independently, collected), and when a
+    /// piece fails at the depth cap the points of the pieces before it have already been sent.
+    #[cfg(feature = "paper")]
+    #[test]
+    fn paper_rule_streams_its_pieces() {
+        use crate::flatten::flatten;
+        let c = &curves()[0];
+        for rule in [SplitRule::Fixed, SplitRule::flatness()] {
+            let tol = 1e-3;
+            let streamed = Flattener::new(tol)
+                .with_method(Method::PaperRule(rule))
+                .flatten_to_vec(c)
+                .unwrap();
+            let options = FlattenOptions::default()
+                .with_tolerance(tol / curve_size(c))
+                .with_rule(rule);
+            let pieces = flatten(c, &options).unwrap().pieces;
+            assert_eq!(streamed.len(), pieces.len() + 1);
+            assert_eq!((streamed[0].t, streamed[0].point), (0.0, c.start()));
+            for (p, piece) in streamed[1..].iter().zip(&pieces) {
+                assert_eq!(
+                    (p.t, p.point),
+                    (piece.t1, piece.points[piece.points.len() - 1])
+                );
+            }
+        }
+        // Eight collinear control points, then a turn: nearly straight on [0, ½], a sharp corner
+        // near t = 1. With a depth cap of 3 the left pieces are flat and sent before the corner
+        // fails.
+        let corner = BezierCurve::new(
+            (0..8)
+                .map(|i| Vector2::new(f64::from(i), 0.0))
+                .chain([Vector2::new(7.0, 7.0)])
+                .collect(),
+        )
+        .unwrap();
+        let mut sent = Vec::new();
+        let result = Flattener::new(1e-4)
+            .with_method(Method::PaperRule(SplitRule::Fixed))
+            .with_max_depth(3)
+            .flatten(&corner, |p| sent.push(p.t));
+        assert_eq!(result, Err(SubdivError::DepthLimit { limit: 3 }));
+        assert!(sent.len() >= 2 && sent[0] == 0.0, "{sent:?}");
+        assert!(sent.windows(2).all(|w| w[0] < w[1]));
     }
 
     /// A path's joints are sent once, with the index of the curve that ends there.

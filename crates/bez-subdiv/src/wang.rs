@@ -3,7 +3,7 @@
 
 use bez_core::{BezierForm, HornerBernstein, Vector2};
 
-use crate::bound::wang_segment_count;
+use crate::bound::wang_count;
 use crate::error::SubdivError;
 use crate::guaranteed::FlatPoint;
 
@@ -16,7 +16,7 @@ pub const MAX_WANG_SEGMENTS: usize = 1 << 24;
 /// Hausdorff distance.
 ///
 /// N = max(1, ⌈√(n(n − 1) M / (8 tol))⌉) with M the largest second difference of the control
-/// points ([`wang_segment_count`]): the chord of a parameter step h interpolates B within
+/// points ([`wang_segment_count`](crate::wang_segment_count)): the chord of a parameter step h interpolates B within
 /// h²/8 · max|B''| and |B''| ≤ n(n − 1) M. The same count as lyon_geom's
 /// `for_each_flattened` for quadratics and cubics (about twice the optimal count on curved
 /// pieces; `Method::Optimal` places about half as many);
@@ -32,38 +32,35 @@ pub const MAX_WANG_SEGMENTS: usize = 1 << 24;
 pub(crate) fn flatten_wang<C: BezierForm<2> + ?Sized>(
     curve: &C,
     tolerance: f64,
-    mut sink: impl FnMut(FlatPoint),
+    sink: impl FnMut(FlatPoint),
 ) -> Result<usize, SubdivError> {
     let bezier = curve.as_bezier();
     let p = bezier.points();
     if p.len() < 2 {
         return Err(SubdivError::TooFewPoints { got: p.len() });
     }
-    let n = wang_segment_count(bezier, tolerance)?;
-    if n > MAX_WANG_SEGMENTS {
-        return Err(SubdivError::TooManySegments {
+    if !(tolerance.is_finite() && tolerance > 0.0) {
+        return Err(SubdivError::InvalidTolerance { value: tolerance });
+    }
+    // Wang's count, checked before the first point. Up to degree 3 it is taken on a
+    // fixed-size copy of the control points, so that the second differences unroll.
+    let count = |q: &[Vector2]| match wang_count(q, tolerance) {
+        Some(n) if n <= MAX_WANG_SEGMENTS => Ok(n),
+        _ => Err(SubdivError::TooManySegments {
             tolerance,
             limit: MAX_WANG_SEGMENTS,
-        });
-    }
-    let step = 1.0 / n as f64;
-    let mut emit = |t: f64, point: Vector2| sink(FlatPoint { t, point });
-    emit(0.0, p[0]);
+        }),
+    };
     match *p {
         [p0, p1] => {
             let a = p1 - p0;
-            for k in 1..n {
-                let t = k as f64 * step;
-                emit(t, p0 + a * t);
-            }
+            Ok(uniform(count(&[p0, p1])?, p0, p1, |t| p0 + a * t, sink))
         }
         [p0, p1, p2] => {
             // B(t) = P₀ + t (a + t b), a = 2(P₁ − P₀), b = P₂ − 2P₁ + P₀.
             let (a, b) = ((p1 - p0) * 2.0, p2 - p1 * 2.0 + p0);
-            for k in 1..n {
-                let t = k as f64 * step;
-                emit(t, p0 + (a + b * t) * t);
-            }
+            let n = count(&[p0, p1, p2])?;
+            Ok(uniform(n, p0, p2, |t| p0 + (a + b * t) * t, sink))
         }
         [p0, p1, p2, p3] => {
             // B(t) = P₀ + t (a + t (b + t c)), a = 3(P₁ − P₀), b = 3(P₂ − 2P₁ + P₀),
@@ -71,24 +68,43 @@ pub(crate) fn flatten_wang<C: BezierForm<2> + ?Sized>(
             let a = (p1 - p0) * 3.0;
             let b = (p2 - p1 * 2.0 + p0) * 3.0;
             let c = p3 - p2 * 3.0 + p1 * 3.0 - p0;
-            for k in 1..n {
-                let t = k as f64 * step;
-                emit(t, p0 + (a + (b + c * t) * t) * t);
-            }
+            let n = count(&[p0, p1, p2, p3])?;
+            Ok(uniform(n, p0, p3, |t| p0 + (a + (b + c * t) * t) * t, sink))
         }
         _ => {
+            let n = count(p)?;
             let horner = HornerBernstein::new(p);
-            for k in 1..n {
-                let t = k as f64 * step;
-                // `None` only for an empty polygon, excluded above.
-                if let Some(point) = horner.eval(t) {
-                    emit(t, point);
-                }
-            }
+            let (first, last) = (p[0], p[p.len() - 1]);
+            // `None` only for an empty polygon, excluded above.
+            let eval = |t: f64| horner.eval(t).unwrap_or(first);
+            Ok(uniform(n, first, last, eval, sink))
         }
     }
-    emit(1.0, p[p.len() - 1]);
-    Ok(n)
+}
+
+/// Sends `first`, the points `eval`(k/n) for k = 1..n and `last` to `sink`; returns n.
+#[inline(always)]
+fn uniform(
+    n: usize,
+    first: Vector2,
+    last: Vector2,
+    eval: impl Fn(f64) -> Vector2,
+    mut sink: impl FnMut(FlatPoint),
+) -> usize {
+    let step = 1.0 / n as f64;
+    sink(FlatPoint {
+        t: 0.0,
+        point: first,
+    });
+    for k in 1..n {
+        let t = k as f64 * step;
+        sink(FlatPoint { t, point: eval(t) });
+    }
+    sink(FlatPoint {
+        t: 1.0,
+        point: last,
+    });
+    n
 }
 
 #[cfg(test)]
@@ -110,7 +126,7 @@ mod tests {
             let tol = rel * crate::curve_size(&c).max(1e-3);
             let mut pts = Vec::new();
             let n = flatten_wang(&c, tol, |p| pts.push(p)).unwrap();
-            prop_assert_eq!(n, wang_segment_count(&c, tol).unwrap());
+            prop_assert_eq!(n, crate::wang_segment_count(&c, tol).unwrap());
             prop_assert_eq!(pts.len(), n + 1);
             prop_assert_eq!(pts[0].point, c.start());
             prop_assert_eq!(pts[n].point, c.end());

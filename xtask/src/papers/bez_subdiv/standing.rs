@@ -1,6 +1,7 @@
 //! The standing comparison of the flatteners a renderer would pick: bez-subdiv's `Fast` and
-//! `Optimal` beside kurbo's `flatten` and lyon_geom's `for_each_flattened`, on the same cubics
-//! at the same absolute tolerance (1e-3 × size): a seeded random set and an adversarial set.
+//! `Optimal` beside kurbo's `flatten` and lyon_geom's `for_each_flattened`, on the same curves
+//! at the same absolute tolerance (1e-3 × size): a seeded random set and an adversarial set of
+//! cubics, and the same of quadratics.
 //! Counts over N* and measured errors are checked; times are reported, not checked.
 
 use std::fmt::Write as _;
@@ -48,6 +49,26 @@ fn adversarial() -> Vec<BezierCurve<2>> {
     .collect()
 }
 
+/// The adversarial quadratics: a fold-back (collinear control points, the middle one outside
+/// the chord), a near-fold, a duplicated end control point, a closed curve, a spike, a
+/// near-line.
+fn adversarial_quadratics() -> Vec<BezierCurve<2>> {
+    let c = |p: [(f64, f64); 3]| {
+        BezierCurve::new(p.iter().map(|&(x, y)| Vector2::new(x, y)).collect()).ok()
+    };
+    [
+        c([(0.0, 0.0), (10.0, 0.0), (1.0, 0.0)]),
+        c([(0.0, 0.0), (10.0, 0.01), (1.0, 0.0)]),
+        c([(0.0, 0.0), (0.0, 0.0), (1.0, 1.0)]),
+        c([(0.0, 0.0), (1.0, 1.0), (0.0, 0.0)]),
+        c([(0.0, 0.0), (0.5, 100.0), (1.0, 0.0)]),
+        c([(0.0, 0.0), (1.0, 1e-6), (2.0, 0.0)]),
+    ]
+    .into_iter()
+    .flatten()
+    .collect()
+}
+
 /// A flattener: its name and a function writing the polyline of (curve, tolerance) into a
 /// buffer (cleared first).
 type Flatten = (
@@ -76,10 +97,16 @@ fn ours(c: &BezierCurve<2>, tol: f64, m: Method, out: &mut Vec<Vector2>) -> Resu
     Ok(())
 }
 
+/// kurbo's `flatten` of a one-curve path (a cubic, or a quadratic as `QuadTo`).
 fn kurbo_flatten(c: &BezierCurve<2>, tol: f64, out: &mut Vec<Vector2>) -> Result<(), DynError> {
-    use kurbo::{BezPath, CubicBez, PathEl};
-    let CubicBez { p0, p1, p2, p3 } = CubicBez::try_from(c)?;
-    let path = BezPath::from_vec(vec![PathEl::MoveTo(p0), PathEl::CurveTo(p1, p2, p3)]);
+    use kurbo::{BezPath, CubicBez, PathEl, QuadBez};
+    let path = if c.degree() == 2 {
+        let QuadBez { p0, p1, p2 } = QuadBez::try_from(c)?;
+        BezPath::from_vec(vec![PathEl::MoveTo(p0), PathEl::QuadTo(p1, p2)])
+    } else {
+        let CubicBez { p0, p1, p2, p3 } = CubicBez::try_from(c)?;
+        BezPath::from_vec(vec![PathEl::MoveTo(p0), PathEl::CurveTo(p1, p2, p3)])
+    };
     out.clear();
     kurbo::flatten(&path, tol, |el| match el {
         PathEl::MoveTo(q) | PathEl::LineTo(q) => out.push(q.into()),
@@ -88,21 +115,30 @@ fn kurbo_flatten(c: &BezierCurve<2>, tol: f64, out: &mut Vec<Vector2>) -> Result
     Ok(())
 }
 
+/// lyon_geom's `for_each_flattened` of a cubic or a quadratic segment.
 fn lyon_flatten(c: &BezierCurve<2>, tol: f64, out: &mut Vec<Vector2>) -> Result<(), DynError> {
-    use lyon_geom::{CubicBezierSegment, point};
-    let p: Vec<_> = c.points().iter().map(|q| point(q.x(), q.y())).collect();
-    let [from, ctrl1, ctrl2, to] = p[..] else {
-        return Err("lyon_geom's cubic flattening is run on cubics only".into());
-    };
-    let cubic = CubicBezierSegment {
-        from,
-        ctrl1,
-        ctrl2,
-        to,
-    };
+    use lyon_geom::{CubicBezierSegment, QuadraticBezierSegment, point};
+    let p = c.points();
+    let q = |i: usize| point(p[i].x(), p[i].y());
     out.clear();
     out.push(c.start());
-    cubic.for_each_flattened(tol, &mut |seg| out.push(Vector2::new(seg.to.x, seg.to.y)));
+    let mut push = |seg: &lyon_geom::LineSegment<f64>| out.push(Vector2::new(seg.to.x, seg.to.y));
+    match p.len() {
+        3 => QuadraticBezierSegment {
+            from: q(0),
+            ctrl: q(1),
+            to: q(2),
+        }
+        .for_each_flattened(tol, &mut push),
+        4 => CubicBezierSegment {
+            from: q(0),
+            ctrl1: q(1),
+            ctrl2: q(2),
+            to: q(3),
+        }
+        .for_each_flattened(tol, &mut push),
+        _ => return Err("lyon_geom's flattening is run on quadratics and cubics only".into()),
+    }
     Ok(())
 }
 
@@ -182,21 +218,33 @@ fn set_rows(
 pub(crate) fn standing_table() -> Result<Table, DynError> {
     let random = bez_subdiv::cases::random_curves(3, RANDOM, SEED);
     let adversarial = adversarial();
+    let random_quadratics = bez_subdiv::cases::random_curves(2, RANDOM, SEED);
+    let adversarial_quadratics = adversarial_quadratics();
     let mut md = format!(
         "### bez-subdiv's flatteners beside kurbo and lyon_geom (tol = {EPS} × size)\n\n\
-         Sets: {RANDOM} random cubics (control points uniform in [0, 1]², ChaCha8, seed {SEED}) and {} adversarial cubics \
-         (cusps, a loop, near-cusps, collinear folds, duplicate and coincident control points, a spike, a near-line, a closed curve). \
+         Sets: {RANDOM} random cubics (control points uniform in [0, 1]², ChaCha8, seed {SEED}), {} adversarial cubics \
+         (cusps, a loop, near-cusps, collinear folds, duplicate and coincident control points, a spike, a near-line, a closed curve), \
+         {RANDOM} random quadratics (the same generator and seed) and {} adversarial quadratics (a collinear fold-back, a near-fold, a duplicated control point, a closed curve, a spike, a near-line); \
+         kurbo flattens the quadratics as `QuadTo`, lyon_geom with `QuadraticBezierSegment::for_each_flattened`. \
          Segments / N*: over the curves with N* ≥ 1 (N* = ∫ √(|κ| / (8 tol)) ds, `optimal_segment_count`). \
          Error: measured Hausdorff distance (20,001 curve samples to the polyline, exact nearest curve points from 5 points per segment) over tol; \
          \"over tol\": curves whose error exceeds tol. Time: in-process, interleaved ({ROUNDS} rounds of about {ROUND_MICROS} µs of calls per method over the whole set), \
          each method's fastest round, on the machine that wrote this file, output into one reused `Vec`; not checked.\n\n\
          | set | method | segments / N*, median | p90 | max | worst error / tol | over tol | segments | time per call (µs) | time per point (ns) |\n\
          |---|---|---|---|---|---|---|---|---|---|\n",
-        adversarial.len()
+        adversarial.len(),
+        adversarial_quadratics.len()
     );
     let mut rows = Vec::new();
     set_rows("random", &random, &mut md, &mut rows)?;
     set_rows("adversarial", &adversarial, &mut md, &mut rows)?;
+    set_rows("random quadratics", &random_quadratics, &mut md, &mut rows)?;
+    set_rows(
+        "adversarial quadratics",
+        &adversarial_quadratics,
+        &mut md,
+        &mut rows,
+    )?;
     Ok(Table {
         name: "bez-subdiv-standing".into(),
         markdown: md,

@@ -11,7 +11,7 @@ use crate::chord::ChordLengths;
 use crate::corners::detect_corners;
 use crate::curvature::feature_points;
 use crate::curve::Closure;
-use crate::distance::foot_point_ctrl;
+use crate::distance::PowerCubic;
 use crate::error::BestCurve;
 use crate::insertion::{insert_points, segment_range};
 use crate::reduction::reduce;
@@ -823,9 +823,10 @@ fn least_squares<const D: usize>(
         let (a, b) = segment_range(fitting, j, n);
         let ctrl = curve.segment_controls(j)?;
         let chord = chord_params(data, a, b);
+        let cubic = PowerCubic::new(&ctrl);
         for (off, t0) in chord.iter().enumerate() {
             let v = data[(a + off) % n];
-            let (t, _) = foot_point_ctrl(&ctrl, &v, *t0);
+            let (t, _) = cubic.foot(&v, *t0);
             let row = segment_weights(sharp, j, bspline_basis(t));
             let mut rhs = v;
             let mut coeffs: Vec<(usize, f64)> = Vec::with_capacity(6);

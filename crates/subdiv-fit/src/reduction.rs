@@ -38,7 +38,6 @@ pub(crate) fn reduce<const D: usize>(
     closed: bool,
     options: &FitOptions,
 ) -> usize {
-    let tol = options.tolerance;
     let min_points = if closed { 3 } else { 2 };
     let mut removed = 0;
     if fitting.len() > MAX_REDUCED {
@@ -66,7 +65,6 @@ pub(crate) fn reduce<const D: usize>(
                 continue;
             };
             if let Some(new_errors) = try_removal(data, fitting, curve, errors, closed, options, j)
-                .filter(|(_, e)| e.iter().all(|&x| x <= tol))
             {
                 fitting.remove(j);
                 (*curve, *errors) = new_errors;
@@ -81,7 +79,11 @@ pub(crate) fn reduce<const D: usize>(
 }
 
 /// The curve without fitting point `j` and an upper bound of each of its segment errors, or
-/// `None` when the system cannot be solved.
+/// `None` when the system cannot be solved or a segment's error exceeds the tolerance.
+///
+/// The cheap certified bounds of the segments outside the window are checked first, then the
+/// merged segment (the one most likely to fail), then the rest of the window; each measurement
+/// stops as soon as the error exceeds the tolerance.
 fn try_removal<const D: usize>(
     data: &[Vector<D>],
     fitting: &[(usize, bool)],
@@ -91,6 +93,7 @@ fn try_removal<const D: usize>(
     options: &FitOptions,
     j: usize,
 ) -> Option<(SubdivCurve<D>, Vec<f64>)> {
+    let tol = options.tolerance;
     let k = fitting.len();
     let mut trial = fitting.to_vec();
     trial.remove(j);
@@ -104,35 +107,42 @@ fn try_removal<const D: usize>(
     let segs2 = next.segment_count();
     // The merged segment: from trial vertex j − 1 to trial vertex j (old j − 1 to old j + 1).
     let merged = (j + k2 - 1) % k2;
-    let near = |s: usize| {
-        let d = if closed {
+    let distance = |s: usize| {
+        if closed {
             let d = s.abs_diff(merged);
             d.min(k2 - d)
         } else {
             s.abs_diff(merged)
-        };
-        d <= WINDOW
+        }
     };
-    let mut out = Vec::with_capacity(segs2);
-    for s in 0..segs2 {
-        let e = if (j == 0 && !closed) || near(s) {
-            assess_segment(data, &trial, &next, closed, options, s).driven(options.measure)
-        } else {
-            // Vertices s − 1 ..= s + 2 shape segment s.
-            let moved = (0..4)
-                .filter_map(|o| {
-                    let t = s + o;
-                    if closed {
-                        Some((t + k2 - 1) % k2)
-                    } else {
-                        (t >= 1 && t - 1 < k2).then(|| t - 1)
-                    }
-                })
-                .map(|t| disp[t])
-                .fold(0.0, f64::max);
-            errors[old(s) % k] + 3.0 * moved
-        };
-        out.push(e);
+    let measured = |s: usize| (j == 0 && !closed) || distance(s) <= WINDOW;
+    let mut out = vec![0.0; segs2];
+    for s in (0..segs2).filter(|&s| !measured(s)) {
+        // Vertices s − 1 ..= s + 2 shape segment s.
+        let moved = (0..4)
+            .filter_map(|o| {
+                let t = s + o;
+                if closed {
+                    Some((t + k2 - 1) % k2)
+                } else {
+                    (t >= 1 && t - 1 < k2).then(|| t - 1)
+                }
+            })
+            .map(|t| disp[t])
+            .fold(0.0, f64::max);
+        out[s] = errors[old(s) % k] + 3.0 * moved;
+        if out[s] > tol {
+            return None;
+        }
+    }
+    let mut window: Vec<usize> = (0..segs2).filter(|&s| measured(s)).collect();
+    window.sort_by_key(|&s| distance(s));
+    for s in window {
+        out[s] =
+            assess_segment(data, &trial, &next, closed, options, s, tol).driven(options.measure);
+        if out[s] > tol {
+            return None;
+        }
     }
     Some((next, out))
 }

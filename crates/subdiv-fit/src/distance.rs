@@ -103,16 +103,13 @@ pub fn point_polyline_distance<const D: usize>(p: &Vector<D>, poly: &[Vector<D>]
     match poly {
         [] => f64::INFINITY,
         [q] => (p - q).norm(),
+        // The square root is monotone: the root of the smallest square is the smallest distance.
         _ => poly
             .windows(2)
-            .map(|w| point_edge_distance(p, &w[0], &w[1]))
-            .fold(f64::INFINITY, f64::min),
+            .map(|w| point_edge_distance_squared(p, &w[0], &w[1]))
+            .fold(f64::INFINITY, f64::min)
+            .sqrt(),
     }
-}
-
-/// Distance from `p` to the edge from `a` to `b`.
-fn point_edge_distance<const D: usize>(p: &Vector<D>, a: &Vector<D>, b: &Vector<D>) -> f64 {
-    point_edge_distance_squared(p, a, b).sqrt()
 }
 
 /// Squared distance from `p` to the edge from `a` to `b`.
@@ -160,9 +157,9 @@ pub(crate) fn curve_to_polyline<const D: usize>(
         });
         return (d, 0.0);
     }
-    // (upper bound, u, sample) per sample, from the walk along the polyline.
+    // (upper bound, its square, u, sample) per sample, from the walk along the polyline.
     let mut e = 0;
-    let mut bounds: Vec<(f64, f64, Vector<D>)> = (0..=samples)
+    let mut bounds: Vec<(f64, f64, f64, Vector<D>)> = (0..=samples)
         .map(|m| {
             let (u, p) = sample(m);
             let mut bound = point_edge_distance_squared(&p, &poly[e], &poly[e + 1]);
@@ -174,7 +171,7 @@ pub(crate) fn curve_to_polyline<const D: usize>(
                 bound = next;
                 e += 1;
             }
-            (bound.sqrt(), u, p)
+            (bound.sqrt(), bound, u, p)
         })
         .collect();
     let mut boxes: Vec<(Vector<D>, Vector<D>)> = Vec::new();
@@ -182,13 +179,13 @@ pub(crate) fn curve_to_polyline<const D: usize>(
     // The sample of largest bound next (of the smallest parameter among equal bounds); usually
     // one or two are measured, so this selection is cheaper than sorting.
     while let Some(next) = (0..bounds.len()).reduce(|x, y| {
-        if bounds[y].0 > bounds[x].0 || (bounds[y].0 == bounds[x].0 && bounds[y].1 < bounds[x].1) {
+        if bounds[y].0 > bounds[x].0 || (bounds[y].0 == bounds[x].0 && bounds[y].2 < bounds[x].2) {
             y
         } else {
             x
         }
     }) {
-        let (bound, u, p) = bounds.swap_remove(next);
+        let (bound, bound2, u, p) = bounds.swap_remove(next);
         // The sample's distance is at most `bound`: it can raise the maximum (or reach it at an
         // earlier parameter) only if `bound` does; no sample left has a larger bound.
         if bound < worst || (bound == worst && u > worst_u) {
@@ -196,7 +193,7 @@ pub(crate) fn curve_to_polyline<const D: usize>(
         }
         // The first sample measured is usually the only one: a plain scan, boxes after it.
         let d = if boxes_ready(&mut boxes, poly) {
-            nearest_edge_distance(&p, poly, &boxes, bound)
+            nearest_edge_distance(&p, poly, &boxes, bound2)
         } else {
             point_polyline_distance(&p, poly)
         };
@@ -235,7 +232,7 @@ fn boxes_ready<const D: usize>(
     false
 }
 
-/// `min(bound, point_polyline_distance(p, poly))` for a polyline of at least two points, skipping
+/// `min(√bound, point_polyline_distance(p, poly))` (`bound` a squared distance) for a polyline of at least two points, skipping
 /// the runs of [`CHUNK`] edges whose bounding box (`boxes`) is farther than the nearest edge so far
 /// (with a margin for the rounding of the edge distance).
 fn nearest_edge_distance<const D: usize>(
@@ -245,15 +242,19 @@ fn nearest_edge_distance<const D: usize>(
     bound: f64,
 ) -> f64 {
     let edges = poly.len() - 1;
-    let mut best = bound;
+    let (mut best, mut best2) = (bound.sqrt(), bound);
     for (c, (lo, hi)) in boxes.iter().enumerate() {
         let gap = (lo - p).sup(&(p - hi)).sup(&Vector::<D>::default()).norm();
         let margin = 8.0 * f64::EPSILON * (p.amax() + lo.amax() + hi.amax());
         if gap - margin >= best {
             continue;
         }
-        for i in c * CHUNK..((c + 1) * CHUNK).min(edges) {
-            best = best.min(point_edge_distance(p, &poly[i], &poly[i + 1]));
+        let run = (c * CHUNK..((c + 1) * CHUNK).min(edges))
+            .map(|i| point_edge_distance_squared(p, &poly[i], &poly[i + 1]))
+            .fold(f64::INFINITY, f64::min);
+        if run < best2 {
+            best2 = run;
+            best = run.sqrt();
         }
     }
     best

@@ -17,6 +17,7 @@ use bez_core::Vector;
 
 use crate::SubdivCurve;
 use crate::assess::assess_segment;
+use crate::chord::ChordLengths;
 use crate::fit::{FitOptions, solve_curve};
 
 /// Segments on either side of a removed point that are measured again.
@@ -140,6 +141,130 @@ fn try_removal<const D: usize>(
     for s in window {
         out[s] =
             assess_segment(data, &trial, &next, closed, options, s, tol).driven(options.measure);
+        if out[s] > tol {
+            return None;
+        }
+    }
+    Some((next, out))
+}
+
+/// Re-spaces the regular fitting points of each span between two consecutive sharp vertices
+/// (for a closed curve without one, of the whole curve from its first fitting point): the fewest
+/// points at equal chord-length steps that keep every segment within the tolerance, when that is
+/// fewer than the span has. Returns the number removed.
+///
+/// Eq. (4) interpolates at uniform parameters, so evenly spaced points suit it best; the insertion
+/// loop leaves them uneven where it bisected, and removing single points then makes the curve
+/// ring.
+pub(crate) fn respace_spans<const D: usize>(
+    data: &[Vector<D>],
+    chords: &ChordLengths,
+    fitting: &mut Vec<(usize, bool)>,
+    curve: &mut SubdivCurve<D>,
+    errors: &mut Vec<f64>,
+    closed: bool,
+    options: &FitOptions,
+) -> usize {
+    let n = data.len();
+    if fitting.len() > MAX_REDUCED {
+        return 0;
+    }
+    // Data indices of the span ends: the sharp vertices, which re-spacing keeps.
+    let mut ends: Vec<usize> = (0..fitting.len())
+        .filter(|&j| curve.sharp()[j])
+        .map(|j| fitting[j].0)
+        .collect();
+    if closed {
+        match ends.first() {
+            Some(&first) => ends.push(first + n),
+            None => ends = vec![fitting[0].0, fitting[0].0 + n],
+        }
+    }
+    let mut removed = 0;
+    for w in ends.windows(2) {
+        let (a, b) = (w[0], w[1]);
+        // Regular points strictly inside the span (unwrapped data indices).
+        let inside = |i: usize| {
+            let u = if i < a { i + n } else { i };
+            u > a && u < b
+        };
+        let r = fitting.iter().filter(|f| inside(f.0)).count();
+        let (start, length) = (chords.at(a), chords.at(b) - chords.at(a));
+        for fewer in 0..r {
+            let mut trial: Vec<(usize, bool)> =
+                fitting.iter().copied().filter(|f| !inside(f.0)).collect();
+            let mut last = a;
+            for m in 1..=fewer {
+                let target = start + length * m as f64 / (fewer + 1) as f64;
+                // `nearest_interior` wraps its result; compare unwrapped.
+                if let Some(i) = chords.nearest_interior(a, b, target) {
+                    let u = if i < a { i + n } else { i };
+                    if u > last {
+                        trial.push((i, false));
+                        last = u;
+                    }
+                }
+            }
+            trial.sort_unstable_by_key(|f| f.0);
+            if let Some((c, e)) = try_trial(data, &trial, fitting, curve, errors, closed, options) {
+                removed += fitting.len() - trial.len();
+                *fitting = trial;
+                *curve = c;
+                *errors = e;
+                break;
+            }
+        }
+    }
+    removed
+}
+
+/// The curve of the fitting points `trial` with an upper bound of each segment error, or `None`
+/// when the system cannot be solved or a segment's error exceeds the tolerance. A segment between
+/// the same two data points as one of the current curve (`fitting`, `curve`, `errors`) moved by
+/// at most the largest displacement of its four control points (the basis functions are
+/// non-negative and sum to 1), which is added to its old error; the others are measured.
+fn try_trial<const D: usize>(
+    data: &[Vector<D>],
+    trial: &[(usize, bool)],
+    fitting: &[(usize, bool)],
+    curve: &SubdivCurve<D>,
+    errors: &[f64],
+    closed: bool,
+    options: &FitOptions,
+) -> Option<(SubdivCurve<D>, Vec<f64>)> {
+    let tol = options.tolerance;
+    let next = solve_curve(data, trial, closed, options.mode).ok()?;
+    let (k, k2) = (fitting.len(), trial.len());
+    let segs = next.segment_count();
+    let mut out = vec![f64::NAN; segs];
+    let mut measured = Vec::new();
+    for s in 0..segs {
+        let (ds, de) = (trial[s].0, trial[(s + 1) % k2].0);
+        let same = fitting
+            .binary_search_by_key(&ds, |f| f.0)
+            .ok()
+            .filter(|&o| o < curve.segment_count() && fitting[(o + 1) % k].0 == de);
+        let Some(old) = same else {
+            measured.push(s);
+            continue;
+        };
+        let (Ok(new_ctrl), Ok(old_ctrl)) = (next.segment_controls(s), curve.segment_controls(old))
+        else {
+            return None;
+        };
+        let moved = new_ctrl
+            .iter()
+            .zip(&old_ctrl)
+            .map(|(p, q)| (p - q).norm())
+            .fold(0.0, f64::max);
+        out[s] = errors[old] + moved;
+        if out[s] > tol {
+            return None;
+        }
+    }
+    for s in measured {
+        out[s] =
+            assess_segment(data, trial, &next, closed, options, s, tol).driven(options.measure);
         if out[s] > tol {
             return None;
         }

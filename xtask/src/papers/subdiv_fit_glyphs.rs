@@ -11,7 +11,7 @@ use std::fmt::Write as _;
 use kurbo::simplify::{SimplifyOptions, simplify_bezpath};
 use kurbo::{Affine, BezPath, ParamCurve, ParamCurveArclen, ParamCurveNearest, PathSeg};
 use serde_json::{Value, json};
-use subdiv_fit::{FitMode, FitOptions, fit_bez_path};
+use subdiv_fit::{FitMode, FitOptions, Reduction, fit_bez_path};
 
 use crate::DynError;
 use crate::tables::Table;
@@ -111,37 +111,47 @@ fn kurbo_all(glyphs: &[Glyph], tol: f64) {
     }
 }
 
-/// Milliseconds per glyph of subdiv-fit (interpolation, least squares) and kurbo at `tol`,
-/// interleaved in one run ([`best_cpu_micros`]: the fastest of [`ROUNDS`] rounds), and whether
-/// they are CPU times.
-fn times_per_glyph(glyphs: &[Glyph], tol: f64) -> Result<([f64; 3], bool), DynError> {
+/// The subdiv-fit configurations of the table at `tol`: interpolation and least squares, each
+/// with the default point removal and with re-spacing first.
+fn configurations(tol: f64) -> [(&'static str, FitOptions); 4] {
     let interp = FitOptions::new(tol);
-    let lsq = FitOptions::new(tol).with_mode(FitMode::LeastSquares);
-    let mut runs: Vec<Run<'_>> = vec![
-        Box::new(|| subdiv_fit_all(glyphs, &interp)),
-        Box::new(|| subdiv_fit_all(glyphs, &lsq)),
-        Box::new(|| {
-            kurbo_all(glyphs, tol);
-            Ok(())
-        }),
-    ];
-    let (micros, cpu) = best_cpu_micros(&mut runs, ROUNDS, 1.0)?;
-    let per_glyph = |us: f64| us / 1e3 / glyphs.len() as f64;
-    Ok((
-        [
-            per_glyph(micros[0]),
-            per_glyph(micros[1]),
-            per_glyph(micros[2]),
-        ],
-        cpu,
-    ))
+    let lsq = interp.with_mode(FitMode::LeastSquares);
+    let respace = Reduction::RespaceAndRemove;
+    [
+        ("subdiv-fit, interpolation", interp),
+        ("subdiv-fit, least squares", lsq),
+        (
+            "subdiv-fit, interpolation, re-spaced",
+            interp.with_reduction(respace),
+        ),
+        (
+            "subdiv-fit, least squares, re-spaced",
+            lsq.with_reduction(respace),
+        ),
+    ]
 }
 
-fn subdiv_fit_totals(glyphs: &[Glyph], tol: f64, mode: FitMode) -> Result<Totals, DynError> {
+/// Milliseconds per glyph of each configuration and then of kurbo at `tol`, interleaved in one
+/// run ([`best_cpu_micros`]: the fastest of [`ROUNDS`] rounds), and whether they are CPU times.
+fn times_per_glyph(glyphs: &[Glyph], tol: f64) -> Result<(Vec<f64>, bool), DynError> {
+    let configs = configurations(tol);
+    let mut runs: Vec<Run<'_>> = configs
+        .iter()
+        .map(|(_, opts)| -> Run<'_> { Box::new(move || subdiv_fit_all(glyphs, opts)) })
+        .collect();
+    runs.push(Box::new(|| {
+        kurbo_all(glyphs, tol);
+        Ok(())
+    }));
+    let (micros, cpu) = best_cpu_micros(&mut runs, ROUNDS, 1.0)?;
+    let per_glyph = |us: f64| us / 1e3 / glyphs.len() as f64;
+    Ok((micros.into_iter().map(per_glyph).collect(), cpu))
+}
+
+fn subdiv_fit_totals(glyphs: &[Glyph], tol: f64, opts: &FitOptions) -> Result<Totals, DynError> {
     let mut t = Totals::default();
-    let opts = FitOptions::new(tol).with_mode(mode);
     for g in glyphs {
-        let (path, fits) = fit_bez_path(&g.outline, &opts)?;
+        let (path, fits) = fit_bez_path(&g.outline, opts)?;
         let corners = subdiv_fit::sample_bez_path(&g.outline, tol)?;
         for (f, c) in fits.iter().zip(&corners) {
             t.points += f.curve.points().len();
@@ -194,7 +204,7 @@ pub(crate) fn table() -> Result<Table, DynError> {
          TrueType: the points the font's glyph table stores ({truetype}, on- and off-curve, implied points not counted). kurbo: `simplify_bezpath` on the true outline at accuracy = tolerance, counting 3 points per cubic, 2 per quadratic, 1 per line.\n\
          Max error: the two-sided distance to the true outline (without the one-point contour of 'u') (16 samples per segment each way, nearest points on the other side), largest over the glyphs; glyphs over: glyphs whose error exceeds the tolerance.\n\
          Corners: joints of the outline where the tangent turns by more than 1°, and how many are sharp vertices of the fit; extra sharp: sharp vertices the fit added (corners at the feature scale).\n\
-         Time per glyph (not checked): {{clock}} per glyph of fitting all glyphs, the three methods interleaved in one release-mode run, the fastest of {ROUNDS} rounds (on the machine that ran `cargo xtask tables`); time ratio: to kurbo's at the same tolerance.\n\n\
+         Time per glyph (not checked): {{clock}} per glyph of fitting all glyphs, the methods interleaved in one release-mode run, the fastest of {ROUNDS} rounds (on the machine that ran `cargo xtask tables`); time ratio: to kurbo's at the same tolerance.\n\n\
          | tolerance (em) | method | control points | ratio to TrueType | max error (em) | glyphs over | corners kept sharp | extra sharp | time per glyph (ms) | time ratio to kurbo |\n\
          |---|---|---|---|---|---|---|---|---|---|\n",
         glyphs.len()
@@ -209,15 +219,15 @@ pub(crate) fn table() -> Result<Table, DynError> {
         } else {
             "wall-clock time"
         };
-        let kurbo_ms = ms[2];
-        let methods = [
-            ("subdiv-fit, interpolation", Some(FitMode::Interpolate)),
-            ("subdiv-fit, least squares", Some(FitMode::LeastSquares)),
-            ("kurbo `simplify_bezpath`", None),
-        ];
-        for ((name, mode), ms) in methods.into_iter().zip(ms) {
-            let t = match mode {
-                Some(m) => subdiv_fit_totals(&glyphs, tol, m)?,
+        let kurbo_ms = ms[ms.len() - 1];
+        let mut methods: Vec<(&str, Option<FitOptions>)> = configurations(tol)
+            .into_iter()
+            .map(|(name, opts)| (name, Some(opts)))
+            .collect();
+        methods.push(("kurbo `simplify_bezpath`", None));
+        for ((name, mode), &ms) in methods.into_iter().zip(&ms) {
+            let t = match &mode {
+                Some(opts) => subdiv_fit_totals(&glyphs, tol, opts)?,
                 None => kurbo_totals(&glyphs, tol),
             };
             let corners = if mode.is_some() {

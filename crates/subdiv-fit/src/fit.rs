@@ -84,10 +84,13 @@ pub enum Reduction {
     /// [`MAX_REDUCED`](crate::MAX_REDUCED) points are left as they are).
     RemovePoints,
     /// First the regular fitting points of each span between two sharp vertices are re-spaced:
-    /// the fewest at equal chord-length steps that keep the tolerance (eq. (4) interpolates at
+    /// the fewest that keep the tolerance, at equal chord-length steps (eq. (4) interpolates at
     /// uniform parameters, so evenly spaced points suit it, while the insertion loop leaves them
-    /// uneven), then [`Reduction::RemovePoints`]. On the printable ASCII glyphs of DejaVu Sans at
-    /// 10⁻³ em: 2,111 control points instead of 2,667 in about 1.35 times the time.
+    /// uneven) or else graded towards the span's ends (a sharp vertex has zero curvature, so the
+    /// curve gains it in the first segments), then [`Reduction::RemovePoints`]. On the printable
+    /// ASCII glyphs of DejaVu Sans at 10⁻³ em: 1,923 control points instead of 2,667 with
+    /// interpolation, in about 1.6 times the time; 1,784 instead of 2,596 in least-squares mode
+    /// (TrueType stores 1,797).
     RespaceAndRemove,
 }
 

@@ -148,10 +148,32 @@ fn try_removal<const D: usize>(
     Some((next, out))
 }
 
+/// Where the regular points of a re-spaced span go.
+#[derive(Clone, Copy)]
+enum Spacing {
+    /// At equal chord-length steps, what the uniform parameters of eq. (4) suit.
+    Even,
+    /// At the chord-length fractions `(1 − cos(π m / p)) / 2`, denser next to the span's ends:
+    /// a sharp vertex has zero curvature on both sides (its phantom point), so a span that leaves
+    /// a corner curved has to gain its curvature within the first segments.
+    Graded,
+}
+
+impl Spacing {
+    /// The chord-length fraction of point `m` of `pieces − 1` inside a span.
+    fn fraction(self, m: usize, pieces: usize) -> f64 {
+        let x = m as f64 / pieces as f64;
+        match self {
+            Spacing::Even => x,
+            Spacing::Graded => 0.5 - 0.5 * (std::f64::consts::PI * x).cos(),
+        }
+    }
+}
+
 /// Re-spaces the regular fitting points of each span between two consecutive sharp vertices
 /// (for a closed curve without one, of the whole curve from its first fitting point): the fewest
-/// points at equal chord-length steps that keep every segment within the tolerance, when that is
-/// fewer than the span has. Returns the number removed.
+/// points, evenly spaced or else graded towards the ends ([`Spacing`]), that keep every segment
+/// within the tolerance, when that is fewer than the span has. Returns the number removed.
 ///
 /// Eq. (4) interpolates at uniform parameters, so evenly spaced points suit it best; the insertion
 /// loop leaves them uneven where it bisected, and removing single points then makes the curve
@@ -190,12 +212,13 @@ pub(crate) fn respace_spans<const D: usize>(
         };
         let r = fitting.iter().filter(|f| inside(f.0)).count();
         let (start, length) = (chords.at(a), chords.at(b) - chords.at(a));
-        for fewer in 0..r {
+        let spacings = (0..r).flat_map(|fewer| [(fewer, Spacing::Even), (fewer, Spacing::Graded)]);
+        for (fewer, spacing) in spacings {
             let mut trial: Vec<(usize, bool)> =
                 fitting.iter().copied().filter(|f| !inside(f.0)).collect();
             let mut last = a;
             for m in 1..=fewer {
-                let target = start + length * m as f64 / (fewer + 1) as f64;
+                let target = start + length * spacing.fraction(m, fewer + 1);
                 // `nearest_interior` wraps its result; compare unwrapped.
                 if let Some(i) = chords.nearest_interior(a, b, target) {
                     let u = if i < a { i + n } else { i };
@@ -270,4 +293,36 @@ fn try_trial<const D: usize>(
         }
     }
     Some((next, out))
+}
+
+#[cfg(test)]
+mod tests {
+    use super::Spacing;
+
+    /// Even fractions are `m / p`; graded ones are increasing, symmetric about the middle, and
+    /// their steps grow from the ends to the middle (denser next to the span's ends).
+    #[test]
+    fn spacing_fractions() {
+        for pieces in 2..12 {
+            let even: Vec<f64> = (0..=pieces)
+                .map(|m| Spacing::Even.fraction(m, pieces))
+                .collect();
+            let graded: Vec<f64> = (0..=pieces)
+                .map(|m| Spacing::Graded.fraction(m, pieces))
+                .collect();
+            for m in 0..=pieces {
+                assert!((even[m] - m as f64 / pieces as f64).abs() < 1e-15);
+                assert!((graded[m] + graded[pieces - m] - 1.0).abs() < 1e-12);
+            }
+            assert!(graded[0].abs() < 1e-15 && (graded[pieces] - 1.0).abs() < 1e-15);
+            let steps: Vec<f64> = graded.windows(2).map(|w| w[1] - w[0]).collect();
+            for m in 0..pieces / 2 {
+                assert!(steps[m] > 0.0);
+                assert!(steps[m] < steps[m + 1] + 1e-12, "{pieces}: {steps:?}");
+            }
+            if pieces > 2 {
+                assert!(steps[0] < 1.0 / pieces as f64);
+            }
+        }
+    }
 }

@@ -229,6 +229,10 @@ pub(crate) fn respace_spans<const D: usize>(
                 }
             }
             trial.sort_unstable_by_key(|f| f.0);
+            // As few points as the removal leaves, at least (a closed polygon needs 3).
+            if trial.len() < if closed { 3 } else { 2 } {
+                continue;
+            }
             if let Some((c, e)) = try_trial(data, &trial, fitting, curve, errors, closed, options) {
                 removed += fitting.len() - trial.len();
                 *fitting = trial;

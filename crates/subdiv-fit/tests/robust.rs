@@ -245,3 +245,28 @@ fn kept_corners_keep_their_angle() {
         );
     }
 }
+
+/// Re-spacing a closed curve without corners (one span round the whole curve) keeps at least
+/// three control points and the tolerance, and does not leave more points than removal alone.
+#[test]
+fn respacing_a_circle_keeps_a_closed_polygon() {
+    let data = noisy_circle(400, 0.0, 1);
+    for tol in [1e-3, 0.05, 0.5] {
+        let opts = FitOptions::new(tol);
+        let removed = fit(&data, Closure::Closed, &opts).unwrap();
+        let respaced = fit(
+            &data,
+            Closure::Closed,
+            &opts.with_reduction(Reduction::RespaceAndRemove),
+        )
+        .unwrap();
+        let k = respaced.curve.points().len();
+        assert!(k >= 3 && k <= removed.curve.points().len(), "{tol}: {k}");
+        assert!(respaced.curve.sharp().iter().all(|&s| !s));
+        let r = respaced.last().unwrap();
+        assert!(
+            r.max_data_to_curve <= tol && r.max_curve_to_data <= tol,
+            "{r:?}"
+        );
+    }
+}

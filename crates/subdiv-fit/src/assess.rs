@@ -1,22 +1,42 @@
 //! Per-segment errors of a round (Sec. 5, eqs. 5–6, and the two-sided measure).
 
+use std::borrow::Cow;
+
 use bez_core::Vector;
 
 use crate::SubdivCurve;
 use crate::bspline::bspline_basis;
 use crate::curve::combine;
-use crate::distance::{foot_point_ctrl, point_polyline_distance};
+use crate::distance::{PowerCubic, curve_to_polyline};
 use crate::fit::{ErrorMeasure, FitOptions};
 use crate::insertion::{Verdict, segment_range};
 
 /// Chord-length parameters of data a..=b (indices mod n), the paper's Newton start (Sec. 5).
 pub(crate) fn chord_params<const D: usize>(data: &[Vector<D>], a: usize, b: usize) -> Vec<f64> {
+    polyline_params(&segment_polyline(data, a, b))
+}
+
+/// Data a..=b (indices mod n): borrowed unless the range wraps round.
+pub(crate) fn segment_polyline<const D: usize>(
+    data: &[Vector<D>],
+    a: usize,
+    b: usize,
+) -> Cow<'_, [Vector<D>]> {
     let n = data.len();
-    let mut acc = Vec::with_capacity(b - a + 1);
+    if b < n {
+        Cow::Borrowed(&data[a..=b])
+    } else {
+        Cow::Owned((a..=b).map(|i| data[i % n]).collect())
+    }
+}
+
+/// Chord-length parameters of the points of a polyline, from 0 to 1.
+fn polyline_params<const D: usize>(poly: &[Vector<D>]) -> Vec<f64> {
+    let mut acc = Vec::with_capacity(poly.len());
     let mut s = 0.0;
     acc.push(0.0);
-    for i in a..b {
-        s += (data[(i + 1) % n] - data[i % n]).norm();
+    for w in poly.windows(2) {
+        s += (w[1] - w[0]).norm();
         acc.push(s);
     }
     if s > 0.0 {
@@ -59,6 +79,9 @@ impl SegmentErrors {
 
 /// Errors of segment `j`: each data point of the segment against it by Newton on eq. (6) from
 /// its chord-length parameter, and dense curve samples against the segment's data polyline.
+///
+/// The measurement stops as soon as the driven error exceeds `cap` (the errors are then lower
+/// bounds, enough to reject the segment); with `cap` = ∞ every error is exact.
 pub(crate) fn assess_segment<const D: usize>(
     data: &[Vector<D>],
     fitting: &[(usize, bool)],
@@ -66,6 +89,7 @@ pub(crate) fn assess_segment<const D: usize>(
     closed: bool,
     options: &FitOptions,
     j: usize,
+    cap: f64,
 ) -> SegmentErrors {
     let n = data.len();
     let tol = options.tolerance;
@@ -83,23 +107,27 @@ pub(crate) fn assess_segment<const D: usize>(
             },
         };
     };
-    let chord = chord_params(data, a, b);
+    let poly = segment_polyline(data, a, b);
+    let chord = polyline_params(&poly);
+    let cubic = PowerCubic::new(&ctrl);
     let (mut seg_max, mut seg_arg, mut sum2, mut count) = (0.0_f64, None, 0.0, 0);
-    for (off, t0) in chord.iter().enumerate() {
+    for (off, (t0, v)) in chord.iter().zip(poly.iter()).enumerate() {
         // The segment's end data points are counted once, by the segment that starts there
         // (for open data the last point also by the last segment).
         let last_of_open = !closed && j + 1 == segs && off + 1 == chord.len();
         if off + 1 == chord.len() && !last_of_open {
             continue;
         }
-        let v = data[(a + off) % n];
-        let (_, d) = foot_point_ctrl(&ctrl, &v, *t0);
+        let (_, d) = cubic.foot(v, *t0);
         sum2 += d * d;
         count += 1;
         if d > seg_max {
             seg_max = d;
             if off > 0 && a + off < b {
                 seg_arg = Some((a + off) % n);
+            }
+            if seg_max > cap {
+                break;
             }
         }
     }
@@ -108,18 +136,14 @@ pub(crate) fn assess_segment<const D: usize>(
         worst_point: seg_arg.filter(|_| seg_max > tol),
     };
     let mut c2d = 0.0_f64;
-    if options.measure == ErrorMeasure::TwoSided || !verdict.fails {
-        let poly: Vec<Vector<D>> = (a..=b).map(|i| data[i % n]).collect();
-        let s = options.samples_per_segment;
-        let mut worst_u = 0.0;
-        for m in 0..=s {
-            let u = m as f64 / s as f64;
-            let d = point_polyline_distance(&combine(&ctrl, bspline_basis(u)), &poly);
-            if d > c2d {
-                c2d = d;
-                worst_u = u;
-            }
-        }
+    let needed = match options.measure {
+        ErrorMeasure::TwoSided => seg_max <= cap,
+        // Reported only, never driven: not needed when the measurement may stop early.
+        ErrorMeasure::DataToCurve => !verdict.fails && cap == f64::INFINITY,
+    };
+    if needed {
+        let worst_u;
+        (c2d, worst_u) = curve_to_polyline(&ctrl, &poly, options.samples_per_segment, cap);
         if options.measure == ErrorMeasure::TwoSided && !verdict.fails && c2d > tol {
             let p = combine(&ctrl, bspline_basis(worst_u));
             verdict = Verdict {
@@ -153,7 +177,7 @@ pub(crate) fn assess<const D: usize>(
     let mut verdicts = Vec::with_capacity(segs);
     let mut driven = Vec::with_capacity(segs);
     for j in 0..segs {
-        let e = assess_segment(data, fitting, curve, closed, options, j);
+        let e = assess_segment(data, fitting, curve, closed, options, j, f64::INFINITY);
         max_d2c = max_d2c.max(e.d2c);
         max_c2d = max_c2d.max(e.c2d);
         sum2 += e.sum2;

@@ -106,15 +106,59 @@ impl ChordLengths {
 
     /// The point of the data polyline at chord length `s` from point 0: wrapped round for closed
     /// data, clamped to the ends for open data.
+    #[cfg(test)]
     pub(crate) fn position<const D: usize>(&self, data: &[Vector<D>], s: f64) -> Vector<D> {
-        let n = self.cum.len();
-        let s = if self.closed && self.total > 0.0 {
-            s.rem_euclid(self.total)
-        } else {
-            s.clamp(0.0, self.total)
-        };
+        let s = self.wrap(s);
         // Last index whose chord length is at or below s.
         let i = self.cum.partition_point(|&c| c <= s).saturating_sub(1);
+        self.point_on_edge(data, s, i)
+    }
+
+    /// [`ChordLengths::position`], with the edge searched from `hint` (updated) instead of by
+    /// bisection: linear in the number of points between the hint and the result, so a sweep
+    /// whose positions move little from one call to the next costs O(1) per call.
+    pub(crate) fn position_from<const D: usize>(
+        &self,
+        data: &[Vector<D>],
+        s: f64,
+        hint: &mut usize,
+    ) -> Vector<D> {
+        let s = self.wrap(s);
+        let n = self.cum.len();
+        // Last index whose chord length is at or below s (0 if none), as by bisection.
+        let mut i = (*hint).min(n - 1);
+        while i + 1 < n && self.cum[i + 1] <= s {
+            i += 1;
+        }
+        while i > 0 && self.cum[i] > s {
+            i -= 1;
+        }
+        *hint = i;
+        self.point_on_edge(data, s, i)
+    }
+
+    /// `s` wrapped round for closed data, clamped to `[0, total]` for open data.
+    fn wrap(&self, s: f64) -> f64 {
+        if self.closed && self.total > 0.0 {
+            // Within one turn either way (every caller) the wrap is one exact subtraction or the
+            // addition `rem_euclid` makes, without its floating-point remainder.
+            if (0.0..self.total).contains(&s) {
+                s
+            } else if (-self.total..0.0).contains(&s) {
+                s + self.total
+            } else if (self.total..2.0 * self.total).contains(&s) {
+                s - self.total
+            } else {
+                s.rem_euclid(self.total)
+            }
+        } else {
+            s.clamp(0.0, self.total)
+        }
+    }
+
+    /// The point at chord length `s` on the edge from data point `i` to the next.
+    fn point_on_edge<const D: usize>(&self, data: &[Vector<D>], s: f64, i: usize) -> Vector<D> {
+        let n = self.cum.len();
         let (j, end) = if i + 1 < n {
             (i + 1, self.cum[i + 1])
         } else if self.closed {
@@ -209,6 +253,29 @@ mod tests {
                 left -= len;
             }
             prop_assert!((got - expected).norm() < 1e-9, "{got:?} vs {expected:?}");
+        }
+
+        /// `position_from` from any hint is bit for bit `position` (bisection), for positions
+        /// up to two turns away either way (the wrap without a remainder, and beyond it), with
+        /// repeated chord lengths (robust chord length on a zigzag).
+        #[test]
+        fn position_from_any_hint_is_position(
+            raw in prop::collection::vec((-5.0f64..5.0, -5.0f64..5.0), 3..20),
+            fracs in prop::collection::vec(-2.5f64..2.5, 1..8),
+            hint0 in 0usize..40,
+            delta in prop::sample::select(vec![0.0, 1.0, 4.0]),
+            closed in any::<bool>(),
+        ) {
+            let data: Vec<Vector2> = raw.iter().map(|&(x, y)| Vector2::new(x, y)).collect();
+            let chords = ChordLengths::robust(&data, closed, delta);
+            let mut hint = hint0;
+            for frac in fracs {
+                let s = frac * chords.total();
+                let expected = chords.position(&data, s);
+                let got = chords.position_from(&data, s, &mut hint);
+                prop_assert_eq!(got, expected);
+                prop_assert!(hint < data.len());
+            }
         }
     }
 

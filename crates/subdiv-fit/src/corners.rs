@@ -47,6 +47,9 @@ pub(crate) fn detect_corners<const D: usize>(
     }
     // (index, scale, turn at half scale) of every candidate.
     let mut candidates: Vec<(usize, f64, f64)> = Vec::new();
+    // Edge hints of the positions at −s/2, +s/2, −s, +s: they move little from point to point.
+    let mut hints = [0; 4];
+    let cos_min = min_turn.cos();
     for i in 0..n {
         let (prev, next) = if closed {
             ((i + n - 1) % n, (i + 1) % n)
@@ -63,13 +66,20 @@ pub(crate) fn detect_corners<const D: usize>(
         if !closed && (at < 0.5 * s || total - at < 0.5 * s) {
             continue;
         }
-        let turn = |r: f64| {
-            let a = chords.position(data, at - r);
-            let b = chords.position(data, at + r);
-            angle_between(&(p - a), &(b - p))
+        let mut chords_at = |r: f64, [before, after]: [usize; 2]| {
+            let a = chords.position_from(data, at - r, &mut hints[before]);
+            let b = chords.position_from(data, at + r, &mut hints[after]);
+            (p - a, b - p)
         };
-        let half = turn(0.5 * s);
-        if half < min_turn || half < SCALE_RATIO * turn(s) {
+        let (a, b) = chords_at(0.5 * s, [0, 1]);
+        if turns_less(&a, &b, cos_min) {
+            continue;
+        }
+        let half = angle_between(&a, &b);
+        if half < min_turn || {
+            let (a, b) = chords_at(s, [2, 3]);
+            half < SCALE_RATIO * angle_between(&a, &b)
+        } {
             continue;
         }
         candidates.push((i, s, half));
@@ -100,4 +110,44 @@ pub(crate) fn detect_corners<const D: usize>(
         }
     }
     kept.into_iter().collect()
+}
+
+/// Whether the turn from `a` to `b` is certainly below the angle `θ` with `cos θ` = `cos_limit`
+/// (`θ` below 90°), without an arctangent or a square root: the turn is below `θ` when
+/// `a·b > cos θ |a| |b|`, i.e. `a·b > 0` and `(a·b)² > cos² θ |a|² |b|²`; the relative margin of
+/// 10⁻⁶ covers the rounding of both sides (and of [`angle_between`]), so `false` only means
+/// "measure it".
+fn turns_less<const D: usize>(a: &Vector<D>, b: &Vector<D>, cos_limit: f64) -> bool {
+    let dot = a.dot(b);
+    cos_limit > 0.0
+        && dot > 0.0
+        && dot * dot > cos_limit * cos_limit * a.norm_squared() * b.norm_squared() * (1.0 + 1e-6)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use bez_core::Vector2;
+    use proptest::prelude::*;
+
+    proptest! {
+        /// The shortcut never answers "below" for a turn that `angle_between` puts at or above
+        /// the limit, and answers it for turns clearly below.
+        #[test]
+        fn turns_less_agrees_with_the_angle(
+            a in (-5.0f64..5.0, -5.0f64..5.0),
+            b in (-5.0f64..5.0, -5.0f64..5.0),
+            limit in 0.0f64..1.6,
+        ) {
+            let (a, b) = (Vector2::new(a.0, a.1), Vector2::new(b.0, b.1));
+            let turn = angle_between(&a, &b);
+            let below = turns_less(&a, &b, limit.cos());
+            if below {
+                prop_assert!(turn < limit, "{turn} vs {limit}");
+            }
+            if limit < 1.5 && turn < 0.99 * limit && a.norm() > 1e-3 && b.norm() > 1e-3 {
+                prop_assert!(below, "{turn} vs {limit}");
+            }
+        }
+    }
 }

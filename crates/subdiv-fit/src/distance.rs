@@ -2,7 +2,7 @@
 
 use bez_core::Vector;
 
-use crate::bspline::{bspline_basis, bspline_basis_d1, bspline_basis_d2};
+use crate::bspline::bspline_basis;
 use crate::curve::combine;
 use crate::{SubdivCurve, SubdivFitError};
 
@@ -29,39 +29,72 @@ pub fn foot_point<const D: usize>(
         });
     }
     let ctrl = curve.segment_controls(segment)?;
-    Ok(foot_point_ctrl(&ctrl, v, t0))
+    Ok(PowerCubic::new(&ctrl).foot(v, t0))
 }
 
-pub(crate) fn foot_point_ctrl<const D: usize>(
-    ctrl: &[Vector<D>; 4],
-    v: &Vector<D>,
-    t0: f64,
-) -> (f64, f64) {
-    let mut t = t0;
-    for _ in 0..30 {
-        let c = combine(ctrl, bspline_basis(t)) - v;
-        let d1 = combine(ctrl, bspline_basis_d1(t));
-        let d2 = combine(ctrl, bspline_basis_d2(t));
-        let g = c.dot(&d1);
-        let gp = d1.norm_squared() + c.dot(&d2);
-        if gp <= 0.0 || !gp.is_finite() {
-            break;
-        }
-        let next = (t - g / gp).clamp(0.0, 1.0);
-        let step = (next - t).abs();
-        t = next;
-        if step < 1e-13 {
-            break;
-        }
-    }
-    let mut best = (t, (combine(ctrl, bspline_basis(t)) - v).norm());
-    for e in [0.0, 1.0] {
-        let d = (combine(ctrl, bspline_basis(e)) - v).norm();
-        if d < best.1 {
-            best = (e, d);
+/// One uniform cubic B-spline segment in power form, `C(t) = c₀ + c₁ t + c₂ t² + c₃ t³`, for
+/// foot points: with the B-spline control points `(a, b, c, d)` (eq. 1),
+/// `c₀ = (a + 4b + c) / 6`, `c₁ = (c − a) / 2`, `c₂ = (a − 2b + c) / 2`, `c₃ = (d − a + 3(b − c)) / 6`.
+pub(crate) struct PowerCubic<const D: usize> {
+    c: [Vector<D>; 4],
+    /// `C(0)` and `C(1)`.
+    start: Vector<D>,
+    end: Vector<D>,
+}
+
+impl<const D: usize> PowerCubic<D> {
+    pub(crate) fn new(ctrl: &[Vector<D>; 4]) -> Self {
+        let [a, b, c, d] = *ctrl;
+        Self {
+            c: [
+                (a + 4.0 * b + c) / 6.0,
+                (c - a) * 0.5,
+                (a - 2.0 * b + c) * 0.5,
+                (d - a + 3.0 * (b - c)) / 6.0,
+            ],
+            start: combine(ctrl, bspline_basis(0.0)),
+            end: combine(ctrl, bspline_basis(1.0)),
         }
     }
-    best
+
+    /// `C(t)`, by Horner's rule.
+    fn at(&self, t: f64) -> Vector<D> {
+        let c = &self.c;
+        c[0] + (c[1] + (c[2] + c[3] * t) * t) * t
+    }
+
+    /// The foot point of `v`: Newton's method on eq. (6), `g(t) = (C(t) − v)ᵀ C'(t) = 0`,
+    /// `g'(t) = |C'|² + (C − v)ᵀ C''`, from `t0`, clamped to `[0, 1]`; the segment's end points
+    /// are also tried, so the result is never worse than them. Returns `(t, distance)`.
+    pub(crate) fn foot(&self, v: &Vector<D>, t0: f64) -> (f64, f64) {
+        let c = &self.c;
+        let mut t = t0;
+        for _ in 0..30 {
+            let r = self.at(t) - v;
+            let d1 = c[1] + (2.0 * c[2] + 3.0 * t * c[3]) * t;
+            let d2 = 2.0 * c[2] + 6.0 * t * c[3];
+            let g = r.dot(&d1);
+            let gp = d1.norm_squared() + r.dot(&d2);
+            if gp <= 0.0 || !gp.is_finite() {
+                break;
+            }
+            let next = (t - g / gp).clamp(0.0, 1.0);
+            let step = (next - t).abs();
+            t = next;
+            if step < 1e-13 {
+                break;
+            }
+        }
+        // Compared squared: the square root is monotone.
+        let mut best = (t, (self.at(t) - v).norm_squared());
+        for (e, end) in [(0.0, &self.start), (1.0, &self.end)] {
+            let d = (end - v).norm_squared();
+            if d < best.1 {
+                best = (e, d);
+            }
+        }
+        (best.0, best.1.sqrt())
+    }
 }
 
 /// Distance from `p` to the polyline through `poly` (to its vertex if it has one point;
@@ -70,18 +103,236 @@ pub fn point_polyline_distance<const D: usize>(p: &Vector<D>, poly: &[Vector<D>]
     match poly {
         [] => f64::INFINITY,
         [q] => (p - q).norm(),
+        // The square root is monotone: the root of the smallest square is the smallest distance.
         _ => poly
             .windows(2)
-            .map(|w| {
-                let e = w[1] - w[0];
-                let len2 = e.norm_squared();
-                let s = if len2 > 0.0 {
-                    ((p - w[0]).dot(&e) / len2).clamp(0.0, 1.0)
-                } else {
-                    0.0
-                };
-                (p - (w[0] + e * s)).norm()
-            })
-            .fold(f64::INFINITY, f64::min),
+            .map(|w| point_edge_distance_squared(p, &w[0], &w[1]))
+            .fold(f64::INFINITY, f64::min)
+            .sqrt(),
+    }
+}
+
+/// Squared distance from `p` to the edge from `a` to `b`.
+fn point_edge_distance_squared<const D: usize>(p: &Vector<D>, a: &Vector<D>, b: &Vector<D>) -> f64 {
+    let e = b - a;
+    let len2 = e.norm_squared();
+    let s = if len2 > 0.0 {
+        ((p - a).dot(&e) / len2).clamp(0.0, 1.0)
+    } else {
+        0.0
+    };
+    (p - (a + e * s)).norm_squared()
+}
+
+/// Edges per box of [`curve_to_polyline`]'s pruning.
+const CHUNK: usize = 8;
+
+/// The largest distance from the samples `C(m / s)`, `m = 0..=s`, of the cubic B-spline segment
+/// `ctrl` to the polyline `poly`, and the parameter of the first sample where it is reached.
+///
+/// Exactly `max_m point_polyline_distance(C(m / s), poly)`, computed without scanning the whole
+/// polyline for most samples: the nearest edge is followed from one sample to the next (a walk
+/// while the next edge is nearer), and the distance to that edge is an upper bound of the
+/// sample's distance to the polyline. The samples are then measured in the order of decreasing
+/// bound, and a sample whose bound is below the largest distance so far cannot raise the maximum
+/// and is skipped; the others are measured exactly, searching the polyline with the bounding
+/// boxes of runs of [`CHUNK`] edges and skipping those farther than the nearest edge found.
+/// Stops as soon as the maximum exceeds `cap` (then the maximum so far is returned).
+pub(crate) fn curve_to_polyline<const D: usize>(
+    ctrl: &[Vector<D>; 4],
+    poly: &[Vector<D>],
+    samples: usize,
+    cap: f64,
+) -> (f64, f64) {
+    let edges = poly.len().saturating_sub(1);
+    let sample = |m: usize| {
+        let u = m as f64 / samples as f64;
+        (u, combine(ctrl, bspline_basis(u)))
+    };
+    if edges == 0 {
+        let d = poly.first().map_or(f64::INFINITY, |q| {
+            (0..=samples)
+                .map(|m| (sample(m).1 - q).norm())
+                .fold(0.0, f64::max)
+        });
+        return (d, 0.0);
+    }
+    // (upper bound, its square, u, sample) per sample, from the walk along the polyline.
+    let mut e = 0;
+    let mut bounds: Vec<(f64, f64, f64, Vector<D>)> = (0..=samples)
+        .map(|m| {
+            let (u, p) = sample(m);
+            let mut bound = point_edge_distance_squared(&p, &poly[e], &poly[e + 1]);
+            while e + 1 < edges {
+                let next = point_edge_distance_squared(&p, &poly[e + 1], &poly[e + 2]);
+                if next >= bound {
+                    break;
+                }
+                bound = next;
+                e += 1;
+            }
+            (bound.sqrt(), bound, u, p)
+        })
+        .collect();
+    let mut boxes: Vec<(Vector<D>, Vector<D>)> = Vec::new();
+    let (mut worst, mut worst_u) = (0.0_f64, 0.0);
+    // The sample of largest bound next (of the smallest parameter among equal bounds); usually
+    // one or two are measured, so this selection is cheaper than sorting.
+    while let Some(next) = (0..bounds.len()).reduce(|x, y| {
+        if bounds[y].0 > bounds[x].0 || (bounds[y].0 == bounds[x].0 && bounds[y].2 < bounds[x].2) {
+            y
+        } else {
+            x
+        }
+    }) {
+        let (bound, bound2, u, p) = bounds.swap_remove(next);
+        // The sample's distance is at most `bound`: it can raise the maximum (or reach it at an
+        // earlier parameter) only if `bound` does; no sample left has a larger bound.
+        if bound < worst || (bound == worst && u > worst_u) {
+            break;
+        }
+        // The first sample measured is usually the only one: a plain scan, boxes after it.
+        let d = if boxes_ready(&mut boxes, poly) {
+            nearest_edge_distance(&p, poly, &boxes, bound2)
+        } else {
+            point_polyline_distance(&p, poly)
+        };
+        if d > worst || (d == worst && u < worst_u) {
+            worst = d;
+            worst_u = u;
+            if worst > cap {
+                break;
+            }
+        }
+    }
+    (worst, worst_u)
+}
+
+/// Whether the boxes of runs of [`CHUNK`] edges of `poly` are there; builds them (for the next
+/// call) when they are not.
+fn boxes_ready<const D: usize>(
+    boxes: &mut Vec<(Vector<D>, Vector<D>)>,
+    poly: &[Vector<D>],
+) -> bool {
+    if !boxes.is_empty() {
+        return true;
+    }
+    boxes.extend(poly.chunks(CHUNK).enumerate().map(|(c, run)| {
+        // The run's edges end at the first point of the next run.
+        let end = poly.get((c + 1) * CHUNK).unwrap_or(&run[run.len() - 1]);
+        let (mut lo, mut hi) = (*end, *end);
+        for q in run {
+            for k in 0..D {
+                lo[k] = lo[k].min(q[k]);
+                hi[k] = hi[k].max(q[k]);
+            }
+        }
+        (lo, hi)
+    }));
+    false
+}
+
+/// `min(√bound, point_polyline_distance(p, poly))` (`bound` a squared distance) for a polyline of at least two points, skipping
+/// the runs of [`CHUNK`] edges whose bounding box (`boxes`) is farther than the nearest edge so far
+/// (with a margin for the rounding of the edge distance).
+fn nearest_edge_distance<const D: usize>(
+    p: &Vector<D>,
+    poly: &[Vector<D>],
+    boxes: &[(Vector<D>, Vector<D>)],
+    bound: f64,
+) -> f64 {
+    let edges = poly.len() - 1;
+    let (mut best, mut best2) = (bound.sqrt(), bound);
+    for (c, (lo, hi)) in boxes.iter().enumerate() {
+        let gap = (lo - p).sup(&(p - hi)).sup(&Vector::<D>::default()).norm();
+        let margin = 8.0 * f64::EPSILON * (p.amax() + lo.amax() + hi.amax());
+        if gap - margin >= best {
+            continue;
+        }
+        let run = (c * CHUNK..((c + 1) * CHUNK).min(edges))
+            .map(|i| point_edge_distance_squared(p, &poly[i], &poly[i + 1]))
+            .fold(f64::INFINITY, f64::min);
+        if run < best2 {
+            best2 = run;
+            best = run.sqrt();
+        }
+    }
+    best
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use bez_core::Vector2;
+    use proptest::prelude::*;
+
+    fn v((x, y): (f64, f64)) -> Vector2 {
+        Vector2::new(x, y)
+    }
+
+    proptest! {
+        /// The pruned curve-to-polyline maximum is bit for bit the plain maximum over the
+        /// samples of `point_polyline_distance` (the first parameter where it is reached
+        /// included), on polylines that follow the segment with noise and on arbitrary ones; with
+        /// a cap, it stops above the cap or returns the plain maximum.
+        #[test]
+        fn curve_to_polyline_is_the_plain_maximum(
+            ctrl in prop::array::uniform4((-3.0f64..3.0, -3.0f64..3.0)),
+            noise in prop::collection::vec((-0.2f64..0.2, -0.2f64..0.2), 2..60),
+            follow in any::<bool>(),
+            samples in 1usize..40,
+            cap in prop::sample::select(vec![0.01, 0.1, 1.0, f64::INFINITY]),
+        ) {
+            let ctrl = ctrl.map(v);
+            let m = noise.len();
+            let poly: Vec<Vector2> = noise
+                .iter()
+                .enumerate()
+                .map(|(i, &e)| {
+                    let base = if follow {
+                        combine(&ctrl, bspline_basis(i as f64 / (m - 1) as f64))
+                    } else {
+                        v((e.1 * 20.0, e.0 * 20.0))
+                    };
+                    base + v(e)
+                })
+                .collect();
+            let (mut plain, mut plain_u) = (0.0_f64, 0.0);
+            for k in 0..=samples {
+                let u = k as f64 / samples as f64;
+                let d = point_polyline_distance(&combine(&ctrl, bspline_basis(u)), &poly);
+                if d > plain {
+                    plain = d;
+                    plain_u = u;
+                }
+            }
+            let (got, got_u) = curve_to_polyline(&ctrl, &poly, samples, cap);
+            if plain > cap {
+                prop_assert!(got > cap && got <= plain);
+            } else {
+                prop_assert_eq!((got, got_u), (plain, plain_u));
+            }
+        }
+
+        /// The power form is the B-spline form (eq. 1), and the foot point is never farther than
+        /// the segment's end points or a dense sampling's best by more than rounding.
+        #[test]
+        fn power_form_and_foot_point(
+            ctrl in prop::array::uniform4((-3.0f64..3.0, -3.0f64..3.0)),
+            q in (-3.0f64..3.0, -3.0f64..3.0),
+            t in 0.0f64..=1.0,
+        ) {
+            let ctrl = ctrl.map(v);
+            let cubic = PowerCubic::new(&ctrl);
+            let scale = 1.0 + ctrl.iter().map(Vector2::amax).fold(0.0, f64::max);
+            prop_assert!((cubic.at(t) - combine(&ctrl, bspline_basis(t))).norm() < 1e-13 * scale);
+            let q = v(q);
+            let (ft, d) = cubic.foot(&q, t);
+            prop_assert!((0.0..=1.0).contains(&ft));
+            prop_assert!(((combine(&ctrl, bspline_basis(ft)) - q).norm() - d).abs() < 1e-12 * scale);
+            for e in [0.0, 1.0] {
+                prop_assert!(d <= (combine(&ctrl, bspline_basis(e)) - q).norm() + 1e-12 * scale);
+            }
+        }
     }
 }

@@ -11,10 +11,10 @@ use crate::chord::ChordLengths;
 use crate::corners::detect_corners;
 use crate::curvature::feature_points;
 use crate::curve::Closure;
-use crate::distance::foot_point_ctrl;
+use crate::distance::PowerCubic;
 use crate::error::BestCurve;
 use crate::insertion::{insert_points, segment_range};
-use crate::reduction::reduce;
+use crate::reduction::{reduce, respace_spans};
 use crate::seeding::seed;
 use crate::tridiagonal::solve_tridiagonal;
 use crate::{SubdivCurve, SubdivFitError};
@@ -83,6 +83,17 @@ pub enum Reduction {
     /// the error stays within the tolerance (re-solving the polygon each time; polygons above
     /// [`MAX_REDUCED`](crate::MAX_REDUCED) points are left as they are).
     RemovePoints,
+    /// First the regular fitting points of each span between two sharp vertices are re-spaced:
+    /// the fewest that keep the tolerance, at equal chord-length steps (eq. (4) interpolates at
+    /// uniform parameters, so evenly spaced points suit it, while the insertion loop leaves them
+    /// uneven) or else graded towards the span's ends (a sharp vertex has zero curvature, so the
+    /// curve gains it in the first segments), then [`Reduction::RemovePoints`]. On the printable
+    /// ASCII glyphs of DejaVu Sans at 10⁻³ em: 1,923 control points instead of 2,667 with
+    /// interpolation, in about 1.6 times the time; 1,784 instead of 2,596 in least-squares mode
+    /// (TrueType stores 1,797). Only the distance tolerance is checked: with the longer segments
+    /// next to them, kept corners may turn by a few degrees more or less than the data's (up to
+    /// 2.6° on the crate's test outline, against under 1° with [`Reduction::RemovePoints`]).
+    RespaceAndRemove,
 }
 
 /// The largest number of data points [`fit`] accepts: 2²⁴ (bez-core's `MAX_SAMPLES`).
@@ -625,15 +636,18 @@ pub fn fit_with_corners<const D: usize>(
         if worst <= options.tolerance {
             let (curve, fitting, reduced) = match options.reduction {
                 Reduction::Off => (curve, fitting, None),
-                Reduction::RemovePoints => reduced_fit(
-                    data,
-                    fitting,
-                    curve,
-                    assessment.driven,
-                    closed,
-                    options,
-                    round,
-                ),
+                Reduction::RemovePoints | Reduction::RespaceAndRemove => {
+                    let (c, f, report) = reduced_fit(
+                        data,
+                        &chords,
+                        fitting,
+                        curve,
+                        assessment.driven,
+                        closed,
+                        options,
+                    );
+                    (c, f, report.map(|r| RoundReport { round, ..r }))
+                }
             };
             return Ok(Fit {
                 curve,
@@ -669,27 +683,33 @@ pub fn fit_with_corners<const D: usize>(
     }
 }
 
-/// [`Reduction::RemovePoints`] on a converged fit, checked once more on every segment (the
-/// converged fit is kept if that check fails).
+/// [`Reduction::RemovePoints`] or [`Reduction::RespaceAndRemove`] on a converged fit, checked once
+/// more on every segment (the converged fit is kept if that check fails).
 fn reduced_fit<const D: usize>(
     data: &[Vector<D>],
+    chords: &ChordLengths,
     fitting: Vec<(usize, bool)>,
     curve: SubdivCurve<D>,
     mut errors: Vec<f64>,
     closed: bool,
     options: &FitOptions,
-    round: usize,
 ) -> (SubdivCurve<D>, Vec<(usize, bool)>, Option<RoundReport>) {
     let (mut f, mut c) = (fitting.clone(), curve.clone());
-    if reduce(data, &mut f, &mut c, &mut errors, closed, options) == 0 {
+    let respaced = if options.reduction == Reduction::RespaceAndRemove {
+        respace_spans(data, chords, &mut f, &mut c, &mut errors, closed, options)
+    } else {
+        0
+    };
+    if reduce(data, &mut f, &mut c, &mut errors, closed, options) + respaced == 0 {
         return (curve, fitting, None);
     }
     let a = assess(data, &f, &c, closed, options);
     if a.driven.iter().any(|&e| e > options.tolerance) {
         return (curve, fitting, None);
     }
+    // The caller sets the round.
     let report = RoundReport {
-        round,
+        round: 0,
         control_points: f.len(),
         max_data_to_curve: a.max_d2c,
         rms_data_to_curve: a.rms_d2c,
@@ -823,9 +843,10 @@ fn least_squares<const D: usize>(
         let (a, b) = segment_range(fitting, j, n);
         let ctrl = curve.segment_controls(j)?;
         let chord = chord_params(data, a, b);
+        let cubic = PowerCubic::new(&ctrl);
         for (off, t0) in chord.iter().enumerate() {
             let v = data[(a + off) % n];
-            let (t, _) = foot_point_ctrl(&ctrl, &v, *t0);
+            let (t, _) = cubic.foot(&v, *t0);
             let row = segment_weights(sharp, j, bspline_basis(t));
             let mut rhs = v;
             let mut coeffs: Vec<(usize, f64)> = Vec::with_capacity(6);

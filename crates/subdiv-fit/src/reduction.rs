@@ -17,6 +17,7 @@ use bez_core::Vector;
 
 use crate::SubdivCurve;
 use crate::assess::assess_segment;
+use crate::chord::ChordLengths;
 use crate::fit::{FitOptions, solve_curve};
 
 /// Segments on either side of a removed point that are measured again.
@@ -38,7 +39,6 @@ pub(crate) fn reduce<const D: usize>(
     closed: bool,
     options: &FitOptions,
 ) -> usize {
-    let tol = options.tolerance;
     let min_points = if closed { 3 } else { 2 };
     let mut removed = 0;
     if fitting.len() > MAX_REDUCED {
@@ -66,7 +66,6 @@ pub(crate) fn reduce<const D: usize>(
                 continue;
             };
             if let Some(new_errors) = try_removal(data, fitting, curve, errors, closed, options, j)
-                .filter(|(_, e)| e.iter().all(|&x| x <= tol))
             {
                 fitting.remove(j);
                 (*curve, *errors) = new_errors;
@@ -81,7 +80,11 @@ pub(crate) fn reduce<const D: usize>(
 }
 
 /// The curve without fitting point `j` and an upper bound of each of its segment errors, or
-/// `None` when the system cannot be solved.
+/// `None` when the system cannot be solved or a segment's error exceeds the tolerance.
+///
+/// The cheap certified bounds of the segments outside the window are checked first, then the
+/// merged segment (the one most likely to fail), then the rest of the window; each measurement
+/// stops as soon as the error exceeds the tolerance.
 fn try_removal<const D: usize>(
     data: &[Vector<D>],
     fitting: &[(usize, bool)],
@@ -91,6 +94,7 @@ fn try_removal<const D: usize>(
     options: &FitOptions,
     j: usize,
 ) -> Option<(SubdivCurve<D>, Vec<f64>)> {
+    let tol = options.tolerance;
     let k = fitting.len();
     let mut trial = fitting.to_vec();
     trial.remove(j);
@@ -104,35 +108,225 @@ fn try_removal<const D: usize>(
     let segs2 = next.segment_count();
     // The merged segment: from trial vertex j − 1 to trial vertex j (old j − 1 to old j + 1).
     let merged = (j + k2 - 1) % k2;
-    let near = |s: usize| {
-        let d = if closed {
+    let distance = |s: usize| {
+        if closed {
             let d = s.abs_diff(merged);
             d.min(k2 - d)
         } else {
             s.abs_diff(merged)
-        };
-        d <= WINDOW
+        }
     };
-    let mut out = Vec::with_capacity(segs2);
-    for s in 0..segs2 {
-        let e = if (j == 0 && !closed) || near(s) {
-            assess_segment(data, &trial, &next, closed, options, s).driven(options.measure)
-        } else {
-            // Vertices s − 1 ..= s + 2 shape segment s.
-            let moved = (0..4)
-                .filter_map(|o| {
-                    let t = s + o;
-                    if closed {
-                        Some((t + k2 - 1) % k2)
-                    } else {
-                        (t >= 1 && t - 1 < k2).then(|| t - 1)
-                    }
-                })
-                .map(|t| disp[t])
-                .fold(0.0, f64::max);
-            errors[old(s) % k] + 3.0 * moved
-        };
-        out.push(e);
+    let measured = |s: usize| (j == 0 && !closed) || distance(s) <= WINDOW;
+    let mut out = vec![0.0; segs2];
+    for s in (0..segs2).filter(|&s| !measured(s)) {
+        // Vertices s − 1 ..= s + 2 shape segment s.
+        let moved = (0..4)
+            .filter_map(|o| {
+                let t = s + o;
+                if closed {
+                    Some((t + k2 - 1) % k2)
+                } else {
+                    (t >= 1 && t - 1 < k2).then(|| t - 1)
+                }
+            })
+            .map(|t| disp[t])
+            .fold(0.0, f64::max);
+        out[s] = errors[old(s) % k] + 3.0 * moved;
+        if out[s] > tol {
+            return None;
+        }
+    }
+    let mut window: Vec<usize> = (0..segs2).filter(|&s| measured(s)).collect();
+    window.sort_by_key(|&s| distance(s));
+    for s in window {
+        out[s] =
+            assess_segment(data, &trial, &next, closed, options, s, tol).driven(options.measure);
+        if out[s] > tol {
+            return None;
+        }
     }
     Some((next, out))
+}
+
+/// Where the regular points of a re-spaced span go.
+#[derive(Clone, Copy)]
+enum Spacing {
+    /// At equal chord-length steps, what the uniform parameters of eq. (4) suit.
+    Even,
+    /// At the chord-length fractions `(1 − cos(π m / p)) / 2`, denser next to the span's ends:
+    /// a sharp vertex has zero curvature on both sides (its phantom point), so a span that leaves
+    /// a corner curved has to gain its curvature within the first segments.
+    Graded,
+}
+
+impl Spacing {
+    /// The chord-length fraction of point `m` of `pieces − 1` inside a span.
+    fn fraction(self, m: usize, pieces: usize) -> f64 {
+        let x = m as f64 / pieces as f64;
+        match self {
+            Spacing::Even => x,
+            Spacing::Graded => 0.5 - 0.5 * (std::f64::consts::PI * x).cos(),
+        }
+    }
+}
+
+/// Re-spaces the regular fitting points of each span between two consecutive sharp vertices
+/// (for a closed curve without one, of the whole curve from its first fitting point): the fewest
+/// points, evenly spaced or else graded towards the ends ([`Spacing`]), that keep every segment
+/// within the tolerance, when that is fewer than the span has. Returns the number removed.
+///
+/// Eq. (4) interpolates at uniform parameters, so evenly spaced points suit it best; the insertion
+/// loop leaves them uneven where it bisected, and removing single points then makes the curve
+/// ring.
+pub(crate) fn respace_spans<const D: usize>(
+    data: &[Vector<D>],
+    chords: &ChordLengths,
+    fitting: &mut Vec<(usize, bool)>,
+    curve: &mut SubdivCurve<D>,
+    errors: &mut Vec<f64>,
+    closed: bool,
+    options: &FitOptions,
+) -> usize {
+    let n = data.len();
+    if fitting.len() > MAX_REDUCED {
+        return 0;
+    }
+    // Data indices of the span ends: the sharp vertices, which re-spacing keeps.
+    let mut ends: Vec<usize> = (0..fitting.len())
+        .filter(|&j| curve.sharp()[j])
+        .map(|j| fitting[j].0)
+        .collect();
+    if closed {
+        match ends.first() {
+            Some(&first) => ends.push(first + n),
+            None => ends = vec![fitting[0].0, fitting[0].0 + n],
+        }
+    }
+    let mut removed = 0;
+    for w in ends.windows(2) {
+        let (a, b) = (w[0], w[1]);
+        // Regular points strictly inside the span (unwrapped data indices).
+        let inside = |i: usize| {
+            let u = if i < a { i + n } else { i };
+            u > a && u < b
+        };
+        let r = fitting.iter().filter(|f| inside(f.0)).count();
+        let (start, length) = (chords.at(a), chords.at(b) - chords.at(a));
+        let spacings = (0..r).flat_map(|fewer| [(fewer, Spacing::Even), (fewer, Spacing::Graded)]);
+        for (fewer, spacing) in spacings {
+            let mut trial: Vec<(usize, bool)> =
+                fitting.iter().copied().filter(|f| !inside(f.0)).collect();
+            let mut last = a;
+            for m in 1..=fewer {
+                let target = start + length * spacing.fraction(m, fewer + 1);
+                // `nearest_interior` wraps its result; compare unwrapped.
+                if let Some(i) = chords.nearest_interior(a, b, target) {
+                    let u = if i < a { i + n } else { i };
+                    if u > last {
+                        trial.push((i, false));
+                        last = u;
+                    }
+                }
+            }
+            trial.sort_unstable_by_key(|f| f.0);
+            // As few points as the removal leaves, at least (a closed polygon needs 3).
+            if trial.len() < if closed { 3 } else { 2 } {
+                continue;
+            }
+            if let Some((c, e)) = try_trial(data, &trial, fitting, curve, errors, closed, options) {
+                removed += fitting.len() - trial.len();
+                *fitting = trial;
+                *curve = c;
+                *errors = e;
+                break;
+            }
+        }
+    }
+    removed
+}
+
+/// The curve of the fitting points `trial` with an upper bound of each segment error, or `None`
+/// when the system cannot be solved or a segment's error exceeds the tolerance. A segment between
+/// the same two data points as one of the current curve (`fitting`, `curve`, `errors`) moved by
+/// at most the largest displacement of its four control points (the basis functions are
+/// non-negative and sum to 1), which is added to its old error; the others are measured.
+fn try_trial<const D: usize>(
+    data: &[Vector<D>],
+    trial: &[(usize, bool)],
+    fitting: &[(usize, bool)],
+    curve: &SubdivCurve<D>,
+    errors: &[f64],
+    closed: bool,
+    options: &FitOptions,
+) -> Option<(SubdivCurve<D>, Vec<f64>)> {
+    let tol = options.tolerance;
+    let next = solve_curve(data, trial, closed, options.mode).ok()?;
+    let (k, k2) = (fitting.len(), trial.len());
+    let segs = next.segment_count();
+    let mut out = vec![f64::NAN; segs];
+    let mut measured = Vec::new();
+    for s in 0..segs {
+        let (ds, de) = (trial[s].0, trial[(s + 1) % k2].0);
+        let same = fitting
+            .binary_search_by_key(&ds, |f| f.0)
+            .ok()
+            .filter(|&o| o < curve.segment_count() && fitting[(o + 1) % k].0 == de);
+        let Some(old) = same else {
+            measured.push(s);
+            continue;
+        };
+        let (Ok(new_ctrl), Ok(old_ctrl)) = (next.segment_controls(s), curve.segment_controls(old))
+        else {
+            return None;
+        };
+        let moved = new_ctrl
+            .iter()
+            .zip(&old_ctrl)
+            .map(|(p, q)| (p - q).norm())
+            .fold(0.0, f64::max);
+        out[s] = errors[old] + moved;
+        if out[s] > tol {
+            return None;
+        }
+    }
+    for s in measured {
+        out[s] =
+            assess_segment(data, trial, &next, closed, options, s, tol).driven(options.measure);
+        if out[s] > tol {
+            return None;
+        }
+    }
+    Some((next, out))
+}
+
+#[cfg(test)]
+mod tests {
+    use super::Spacing;
+
+    /// Even fractions are `m / p`; graded ones are increasing, symmetric about the middle, and
+    /// their steps grow from the ends to the middle (denser next to the span's ends).
+    #[test]
+    fn spacing_fractions() {
+        for pieces in 2..12 {
+            let even: Vec<f64> = (0..=pieces)
+                .map(|m| Spacing::Even.fraction(m, pieces))
+                .collect();
+            let graded: Vec<f64> = (0..=pieces)
+                .map(|m| Spacing::Graded.fraction(m, pieces))
+                .collect();
+            for m in 0..=pieces {
+                assert!((even[m] - m as f64 / pieces as f64).abs() < 1e-15);
+                assert!((graded[m] + graded[pieces - m] - 1.0).abs() < 1e-12);
+            }
+            assert!(graded[0].abs() < 1e-15 && (graded[pieces] - 1.0).abs() < 1e-15);
+            let steps: Vec<f64> = graded.windows(2).map(|w| w[1] - w[0]).collect();
+            for m in 0..pieces / 2 {
+                assert!(steps[m] > 0.0);
+                assert!(steps[m] < steps[m + 1] + 1e-12, "{pieces}: {steps:?}");
+            }
+            if pieces > 2 {
+                assert!(steps[0] < 1.0 / pieces as f64);
+            }
+        }
+    }
 }

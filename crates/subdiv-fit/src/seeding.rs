@@ -94,8 +94,9 @@ fn piece_count<const D: usize>(
     };
     let steps = by_scale.clamp(2.0, 128.0).min((b - a).max(2) as f64) as usize;
     let steps = steps.clamp(2, MAX_COARSE_STEPS);
+    let mut hint = a % chords.len();
     let coarse: Vec<Vector<D>> = (0..=steps)
-        .map(|k| chords.position(data, start + length * k as f64 / steps as f64))
+        .map(|k| chords.position_from(data, start + length * k as f64 / steps as f64, &mut hint))
         .collect();
     // cum[k]: turning from the start up to coarse vertex k.
     let mut cum = vec![0.0; steps + 1];

@@ -130,10 +130,10 @@ fn options() -> impl Strategy<Value = FitOptions> {
                     } else {
                         Insertion::MaxError
                     })
-                    .with_reduction(if flags.4 {
-                        Reduction::RemovePoints
-                    } else {
-                        Reduction::Off
+                    .with_reduction(match (flags.4, flags.0) {
+                        (true, true) => Reduction::RespaceAndRemove,
+                        (true, false) => Reduction::RemovePoints,
+                        (false, _) => Reduction::Off,
                     })
             },
         )

@@ -168,9 +168,10 @@ fn control_counts_do_not_grow_with_the_sampling_density() {
     assert!(counts[0] <= 80, "{counts:?}");
 }
 
-/// Point removal after convergence keeps both error measures within the tolerance (checked
-/// independently: every data point against dense samples of the curve, and the samples against the
-/// data polyline) and, in least-squares mode, removes points; corners stay.
+/// Point removal after convergence, with and without re-spacing the spans first, keeps both error
+/// measures within the tolerance (checked independently: every data point against dense samples
+/// of the curve, and the samples against the data polyline) and, in least-squares mode and with
+/// re-spacing, removes points; re-spacing never leaves more than removal alone; corners stay.
 #[test]
 fn point_removal_keeps_the_tolerance() {
     let (data, corners) = outline(4000);
@@ -178,37 +179,47 @@ fn point_removal_keeps_the_tolerance() {
     for mode in [FitMode::LeastSquares, FitMode::Interpolate] {
         let opts = FitOptions::new(tol).with_mode(mode);
         let plain = fit(&data, Closure::Closed, &opts.with_reduction(Reduction::Off)).unwrap();
-        let f = fit(&data, Closure::Closed, &opts).unwrap();
-        let k = f.curve.points().len();
-        assert!(k <= plain.curve.points().len());
-        if mode == FitMode::LeastSquares {
-            assert!(k < plain.curve.points().len(), "{k}");
-            assert!(f.reduced.is_some());
-        }
-        let r = f.last().unwrap();
-        assert_eq!(r.control_points, k);
-        assert!(
-            r.max_data_to_curve <= tol && r.max_curve_to_data <= tol,
-            "{r:?}"
-        );
-        let sharp: Vec<usize> = (0..k)
-            .filter(|&j| f.curve.sharp()[j])
-            .map(|j| f.fitting[j])
-            .collect();
-        assert_eq!(sharp, corners);
-        let mut samples = Vec::new();
-        let count = k * 64;
-        let params: Vec<f64> = (0..=count)
-            .map(|m| m as f64 * k as f64 / count as f64)
-            .collect();
-        f.curve.eval_many(&params, &mut samples).unwrap();
-        let mut closed_data = data.clone();
-        closed_data.push(data[0]);
-        for p in &samples {
-            assert!(point_polyline_distance(p, &closed_data) <= tol * 1.001);
-        }
-        for v in data.iter().step_by(7) {
-            assert!(point_polyline_distance(v, &samples) <= tol * 1.01);
+        let removed = fit(&data, Closure::Closed, &opts).unwrap();
+        let respaced = fit(
+            &data,
+            Closure::Closed,
+            &opts.with_reduction(Reduction::RespaceAndRemove),
+        )
+        .unwrap();
+        assert!(respaced.curve.points().len() < removed.curve.points().len());
+        assert!(respaced.reduced.is_some());
+        for f in [removed, respaced] {
+            let k = f.curve.points().len();
+            assert!(k <= plain.curve.points().len());
+            if mode == FitMode::LeastSquares {
+                assert!(k < plain.curve.points().len(), "{k}");
+                assert!(f.reduced.is_some());
+            }
+            let r = f.last().unwrap();
+            assert_eq!(r.control_points, k);
+            assert!(
+                r.max_data_to_curve <= tol && r.max_curve_to_data <= tol,
+                "{r:?}"
+            );
+            let sharp: Vec<usize> = (0..k)
+                .filter(|&j| f.curve.sharp()[j])
+                .map(|j| f.fitting[j])
+                .collect();
+            assert_eq!(sharp, corners);
+            let mut samples = Vec::new();
+            let count = k * 64;
+            let params: Vec<f64> = (0..=count)
+                .map(|m| m as f64 * k as f64 / count as f64)
+                .collect();
+            f.curve.eval_many(&params, &mut samples).unwrap();
+            let mut closed_data = data.clone();
+            closed_data.push(data[0]);
+            for p in &samples {
+                assert!(point_polyline_distance(p, &closed_data) <= tol * 1.001);
+            }
+            for v in data.iter().step_by(7) {
+                assert!(point_polyline_distance(v, &samples) <= tol * 1.01);
+            }
         }
     }
 }
@@ -231,6 +242,31 @@ fn kept_corners_keep_their_angle() {
         assert!(
             (turn.abs() - exact).abs() < 1.0,
             "corner {c}: {turn}° for {exact}°"
+        );
+    }
+}
+
+/// Re-spacing a closed curve without corners (one span round the whole curve) keeps at least
+/// three control points and the tolerance, and does not leave more points than removal alone.
+#[test]
+fn respacing_a_circle_keeps_a_closed_polygon() {
+    let data = noisy_circle(400, 0.0, 1);
+    for tol in [1e-3, 0.05, 0.5] {
+        let opts = FitOptions::new(tol);
+        let removed = fit(&data, Closure::Closed, &opts).unwrap();
+        let respaced = fit(
+            &data,
+            Closure::Closed,
+            &opts.with_reduction(Reduction::RespaceAndRemove),
+        )
+        .unwrap();
+        let k = respaced.curve.points().len();
+        assert!(k >= 3 && k <= removed.curve.points().len(), "{tol}: {k}");
+        assert!(respaced.curve.sharp().iter().all(|&s| !s));
+        let r = respaced.last().unwrap();
+        assert!(
+            r.max_data_to_curve <= tol && r.max_curve_to_data <= tol,
+            "{r:?}"
         );
     }
 }

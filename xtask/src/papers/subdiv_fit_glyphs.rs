@@ -7,15 +7,15 @@
 //! the outline, and 16 points per outline segment to the nearest point of the result.
 
 use std::fmt::Write as _;
-use std::time::Instant;
 
 use kurbo::simplify::{SimplifyOptions, simplify_bezpath};
 use kurbo::{Affine, BezPath, ParamCurve, ParamCurveArclen, ParamCurveNearest, PathSeg};
 use serde_json::{Value, json};
-use subdiv_fit::{FitMode, FitOptions, fit_bez_path};
+use subdiv_fit::{FitMode, FitOptions, Reduction, fit_bez_path};
 
 use crate::DynError;
 use crate::tables::Table;
+use crate::timing::{Run, best_cpu_micros};
 
 const DATA: &str = include_str!("../../data/dejavu-sans-ascii.tsv");
 
@@ -87,16 +87,71 @@ struct Totals {
     corners: usize,
     corners_sharp: usize,
     extra_sharp: usize,
-    ms: f64,
 }
 
-fn subdiv_fit_totals(glyphs: &[Glyph], tol: f64, mode: FitMode) -> Result<Totals, DynError> {
-    let mut t = Totals::default();
-    let opts = FitOptions::new(tol).with_mode(mode);
+/// Rounds of the interleaved timing (each fits every glyph once per method).
+const ROUNDS: usize = 5;
+
+/// Fits every glyph with subdiv-fit.
+fn subdiv_fit_all(glyphs: &[Glyph], opts: &FitOptions) -> Result<(), DynError> {
     for g in glyphs {
-        let start = Instant::now();
-        let (path, fits) = fit_bez_path(&g.outline, &opts)?;
-        t.ms += start.elapsed().as_secs_f64() * 1e3;
+        std::hint::black_box(fit_bez_path(&g.outline, opts)?);
+    }
+    Ok(())
+}
+
+/// Simplifies every glyph with kurbo.
+fn kurbo_all(glyphs: &[Glyph], tol: f64) {
+    for g in glyphs {
+        std::hint::black_box(simplify_bezpath(
+            g.outline.elements().iter().copied(),
+            tol,
+            &SimplifyOptions::default(),
+        ));
+    }
+}
+
+/// The subdiv-fit configurations of the table at `tol`: interpolation and least squares, each
+/// with the default point removal and with re-spacing first.
+fn configurations(tol: f64) -> [(&'static str, FitOptions); 4] {
+    let interp = FitOptions::new(tol);
+    let lsq = interp.with_mode(FitMode::LeastSquares);
+    let respace = Reduction::RespaceAndRemove;
+    [
+        ("subdiv-fit, interpolation", interp),
+        ("subdiv-fit, least squares", lsq),
+        (
+            "subdiv-fit, interpolation, re-spaced",
+            interp.with_reduction(respace),
+        ),
+        (
+            "subdiv-fit, least squares, re-spaced",
+            lsq.with_reduction(respace),
+        ),
+    ]
+}
+
+/// Milliseconds per glyph of each configuration and then of kurbo at `tol`, interleaved in one
+/// run ([`best_cpu_micros`]: the fastest of [`ROUNDS`] rounds), and whether they are CPU times.
+fn times_per_glyph(glyphs: &[Glyph], tol: f64) -> Result<(Vec<f64>, bool), DynError> {
+    let configs = configurations(tol);
+    let mut runs: Vec<Run<'_>> = configs
+        .iter()
+        .map(|(_, opts)| -> Run<'_> { Box::new(move || subdiv_fit_all(glyphs, opts)) })
+        .collect();
+    runs.push(Box::new(|| {
+        kurbo_all(glyphs, tol);
+        Ok(())
+    }));
+    let (micros, cpu) = best_cpu_micros(&mut runs, ROUNDS, 1.0)?;
+    let per_glyph = |us: f64| us / 1e3 / glyphs.len() as f64;
+    Ok((micros.into_iter().map(per_glyph).collect(), cpu))
+}
+
+fn subdiv_fit_totals(glyphs: &[Glyph], tol: f64, opts: &FitOptions) -> Result<Totals, DynError> {
+    let mut t = Totals::default();
+    for g in glyphs {
+        let (path, fits) = fit_bez_path(&g.outline, opts)?;
         let corners = subdiv_fit::sample_bez_path(&g.outline, tol)?;
         for (f, c) in fits.iter().zip(&corners) {
             t.points += f.curve.points().len();
@@ -112,20 +167,17 @@ fn subdiv_fit_totals(glyphs: &[Glyph], tol: f64, mode: FitMode) -> Result<Totals
         t.max_error = t.max_error.max(e);
         t.glyphs_over += usize::from(e > tol);
     }
-    t.ms /= glyphs.len() as f64;
     Ok(t)
 }
 
 fn kurbo_totals(glyphs: &[Glyph], tol: f64) -> Totals {
     let mut t = Totals::default();
     for g in glyphs {
-        let start = Instant::now();
         let path = simplify_bezpath(
             g.outline.elements().iter().copied(),
             tol,
             &SimplifyOptions::default(),
         );
-        t.ms += start.elapsed().as_secs_f64() * 1e3;
         // 3 points per cubic (the shared end point counted once), 2 per quadratic, 1 per line.
         t.points += path
             .segments()
@@ -139,7 +191,6 @@ fn kurbo_totals(glyphs: &[Glyph], tol: f64) -> Totals {
         t.max_error = t.max_error.max(e);
         t.glyphs_over += usize::from(e > tol);
     }
-    t.ms /= glyphs.len() as f64;
     t
 }
 
@@ -153,22 +204,30 @@ pub(crate) fn table() -> Result<Table, DynError> {
          TrueType: the points the font's glyph table stores ({truetype}, on- and off-curve, implied points not counted). kurbo: `simplify_bezpath` on the true outline at accuracy = tolerance, counting 3 points per cubic, 2 per quadratic, 1 per line.\n\
          Max error: the two-sided distance to the true outline (without the one-point contour of 'u') (16 samples per segment each way, nearest points on the other side), largest over the glyphs; glyphs over: glyphs whose error exceeds the tolerance.\n\
          Corners: joints of the outline where the tangent turns by more than 1°, and how many are sharp vertices of the fit; extra sharp: sharp vertices the fit added (corners at the feature scale).\n\
-         Time per glyph (not checked): wall-clock of one release-mode run on the machine that ran `cargo xtask tables`.\n\n\
-         | tolerance (em) | method | control points | ratio to TrueType | max error (em) | glyphs over | corners kept sharp | extra sharp | time per glyph (ms) |\n\
-         |---|---|---|---|---|---|---|---|---|\n",
+         Time per glyph (not checked): {{clock}} per glyph of fitting all glyphs, the methods interleaved in one release-mode run, the fastest of {ROUNDS} rounds (on the machine that ran `cargo xtask tables`); time ratio: to kurbo's at the same tolerance.\n\n\
+         | tolerance (em) | method | control points | ratio to TrueType | max error (em) | glyphs over | corners kept sharp | extra sharp | time per glyph (ms) | time ratio to kurbo |\n\
+         |---|---|---|---|---|---|---|---|---|---|\n",
         glyphs.len()
     );
     let mut rows = Vec::new();
+    let mut clock = "wall-clock time";
     for tol in [1e-3, 1e-2] {
-        writeln!(md, "| {tol} | TrueType | {truetype} | 1.00 | | | | | |")?;
-        let methods = [
-            ("subdiv-fit, interpolation", Some(FitMode::Interpolate)),
-            ("subdiv-fit, least squares", Some(FitMode::LeastSquares)),
-            ("kurbo `simplify_bezpath`", None),
-        ];
-        for (name, mode) in methods {
-            let t = match mode {
-                Some(m) => subdiv_fit_totals(&glyphs, tol, m)?,
+        writeln!(md, "| {tol} | TrueType | {truetype} | 1.00 | | | | | | |")?;
+        let (ms, cpu) = times_per_glyph(&glyphs, tol)?;
+        clock = if cpu {
+            "CPU time of the fitting thread"
+        } else {
+            "wall-clock time"
+        };
+        let kurbo_ms = ms[ms.len() - 1];
+        let mut methods: Vec<(&str, Option<FitOptions>)> = configurations(tol)
+            .into_iter()
+            .map(|(name, opts)| (name, Some(opts)))
+            .collect();
+        methods.push(("kurbo `simplify_bezpath`", None));
+        for ((name, mode), &ms) in methods.into_iter().zip(&ms) {
+            let t = match &mode {
+                Some(opts) => subdiv_fit_totals(&glyphs, tol, opts)?,
                 None => kurbo_totals(&glyphs, tol),
             };
             let corners = if mode.is_some() {
@@ -183,12 +242,12 @@ pub(crate) fn table() -> Result<Table, DynError> {
             };
             writeln!(
                 md,
-                "| {tol} | {name} | {} | {:.2} | {:.2e} | {} | {corners} | {extra} | {:.2} |",
+                "| {tol} | {name} | {} | {:.2} | {:.2e} | {} | {corners} | {extra} | {ms:.2} | {:.1} |",
                 t.points,
                 t.points as f64 / truetype as f64,
                 t.max_error,
                 t.glyphs_over,
-                t.ms
+                ms / kurbo_ms
             )?;
             rows.push(json!({
                 "tolerance": tol, "method": name, "control_points": t.points,
@@ -197,6 +256,7 @@ pub(crate) fn table() -> Result<Table, DynError> {
             }));
         }
     }
+    let md = md.replacen("{clock}", clock, 1);
     Ok(Table {
         name: "subdiv-fit-glyphs".into(),
         markdown: md,

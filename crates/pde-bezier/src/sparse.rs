@@ -22,26 +22,25 @@ use faer::{Mat, Side};
 ///
 /// Measured by `cargo xtask tables` (docs/results/pde-bezier-crossover.md: Laplace's
 /// operator, collocation, solve time sparse/dense): dense is faster on single patches up to
-/// 144 unknowns (1.2–1.6) and on grids of bi-quintic C¹ patches up to 256–400 (1.4–1.8, one
-/// noisy 0.7 at 96), sparse from 576 unknowns (0.67; 0.44 at 1,024). The switch sits
-/// between the last clear dense win and the break-even.
+/// 144 unknowns (1.1–1.7) and on grids of bi-quintic C¹ patches up to 256 (1.3–1.5), even
+/// at 400 (1.04), sparse from 576 unknowns (0.78; 0.37 at 1,024).
 pub const DENSE_SQUARE_UNKNOWNS: usize = 320;
 
 /// Symmetric definite systems (Galerkin with every side fixed or periodic) with at most this
 /// many unknowns are solved by dense Cholesky under [`Storage::Auto`].
 ///
 /// Measured as [`DENSE_SQUARE_UNKNOWNS`] with Galerkin: dense is faster on single patches
-/// up to 100 unknowns (1.1–1.2; 0.89 at 144) and on grids up to 256 (1.1–1.5, noisy 0.6–0.9
-/// at 96 and 192), even at 400 (1.02), sparse from 576 (0.88; 0.38 at 1,024).
-pub const DENSE_SYMMETRIC_UNKNOWNS: usize = 320;
+/// up to 144 unknowns (1.04–1.13) and on grids up to 192 (1.1–1.2), sparse from 256 (0.94;
+/// 0.79 at 400, 0.37 at 1,024).
+pub const DENSE_SYMMETRIC_UNKNOWNS: usize = 224;
 
 /// Least-squares systems (the two residual objectives) with at most this many unknowns are
 /// solved by dense QR under [`Storage::Auto`].
 ///
 /// Measured as [`DENSE_SQUARE_UNKNOWNS`] with both objectives: dense QR is faster on grids
-/// up to 96 unknowns (1.1–1.8) and sparse from 144 on (0.9; 0.3 at 400, 0.1 at 1,024); on
-/// single patches of degree 5–13 the two are within about 30 % either way.
-pub const DENSE_LEAST_SQUARES_UNKNOWNS: usize = 96;
+/// up to 64 unknowns (1.1–1.4) and sparse from 96 on (0.91; 0.3 at 400, 0.1 at 1,024); on
+/// single patches of degree 5–13 (16–144 unknowns) the two are within about 35 % either way.
+pub const DENSE_LEAST_SQUARES_UNKNOWNS: usize = 80;
 
 /// The dense-to-sparse switch of [`Storage::Auto`] for a kind of system.
 fn dense_threshold(kind: Kind) -> usize {
@@ -92,8 +91,7 @@ fn sparse_solve(
     if kind == Kind::LeastSquares {
         return sparse_qr_solve(a, b).then_some(Factorization::SparseQr);
     }
-    if definite && let Ok(llt) = a.sp_cholesky(Side::Lower) {
-        refine(a, b, |x| llt.solve_in_place(x));
+    if definite && sparse_llt_solve(a, b) {
         return Some(Factorization::SparseLlt);
     }
     let lu = a.sp_lu().ok()?;
@@ -101,10 +99,61 @@ fn sparse_solve(
     Some(Factorization::SparseLu)
 }
 
+/// Supernodal sparse LLᵀ of the lower triangle (approximate minimum degree ordering) and
+/// the solve of every column of `b` in place with one step of [`refine`]; false when the
+/// factorization fails (not definite) or cannot be set up.
+///
+/// The supernodal variant is forced: faer's automatic choice picks the simplicial one on
+/// long strips of patches, where it is slower.
+fn sparse_llt_solve(a: &SparseColMat<usize, f64>, b: &mut Mat<f64>) -> bool {
+    use faer::dyn_stack::{MemBuffer, MemStack};
+    use faer::sparse::linalg::SupernodalThreshold;
+    use faer::sparse::linalg::cholesky::{
+        CholeskySymbolicParams, LltRef, SymmetricOrdering, factorize_symbolic_cholesky,
+    };
+    let params = CholeskySymbolicParams {
+        supernodal_flop_ratio_threshold: SupernodalThreshold::FORCE_SUPERNODAL,
+        ..Default::default()
+    };
+    let Ok(symbolic) =
+        factorize_symbolic_cholesky(a.symbolic(), Side::Lower, SymmetricOrdering::Amd, params)
+    else {
+        return false;
+    };
+    let par = faer::Par::Seq;
+    let req = symbolic
+        .factorize_numeric_llt_scratch::<f64>(par, Default::default())
+        .or(symbolic.solve_in_place_scratch::<f64>(b.ncols(), par));
+    let Ok(mut mem) = MemBuffer::try_new(req) else {
+        return false;
+    };
+    let stack = MemStack::new(&mut mem);
+    let mut values = vec![0.0; symbolic.len_val()];
+    if symbolic
+        .factorize_numeric_llt(
+            &mut values,
+            a.as_ref(),
+            Side::Lower,
+            Default::default(),
+            par,
+            stack,
+            Default::default(),
+        )
+        .is_err()
+    {
+        return false;
+    }
+    let llt = LltRef::new(&symbolic, &values);
+    refine(a, b, |x| {
+        llt.solve_in_place_with_conj(faer::Conj::No, x.as_mut(), par, stack);
+    });
+    true
+}
+
 /// X = S(B), then one step of iterative refinement X += S(B − A X) against the whole of A:
 /// a Cholesky factorization reads only the lower triangle, and A is symmetric only up to the
 /// rounding of its assembly.
-fn refine(a: &SparseColMat<usize, f64>, b: &mut Mat<f64>, solve: impl Fn(&mut Mat<f64>)) {
+fn refine(a: &SparseColMat<usize, f64>, b: &mut Mat<f64>, mut solve: impl FnMut(&mut Mat<f64>)) {
     let mut r = b.clone();
     solve(b);
     for j in 0..a.ncols() {

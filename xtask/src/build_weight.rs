@@ -147,12 +147,40 @@ fn measure(dir: &Path, name: &str, dep: &str) -> Result<Measure, DynError> {
     })
 }
 
-/// Runs the measurement: `rounds` rounds over all crates, each crate's fastest round.
-pub(crate) fn run(rounds: usize) -> Result<(), DynError> {
+/// With `--only CRATE`: that crate beside kurbo, plus, for pde-bezier, faer alone with its
+/// default features and with the feature set the workspace uses (what the feature choice
+/// saves). Printed only: the committed table keeps one run over all crates.
+fn only_subjects(root: &Path, only: &str) -> Result<Vec<(String, String)>, DynError> {
+    let mut v: Vec<(String, String)> = subjects(root)
+        .into_iter()
+        .filter(|(name, _)| name == only || name == "kurbo")
+        .collect();
+    if v.len() < 2 {
+        return Err(format!("build-weight --only: unknown crate `{only}`").into());
+    }
+    if only == "pde-bezier" {
+        let faer = locked_version(root, "faer");
+        v.push(("faer-default".into(), format!("faer = \"={faer}\"")));
+        v.push((
+            "faer-sparse".into(),
+            format!(
+                "faer = {{ version = \"={faer}\", default-features = false, features = [\"std\", \"sparse-linalg\"] }}"
+            ),
+        ));
+    }
+    Ok(v)
+}
+
+/// Runs the measurement: `rounds` rounds over all crates (or `only` one, see
+/// [`only_subjects`]), each crate's fastest round.
+pub(crate) fn run(rounds: usize, only: Option<&str>) -> Result<(), DynError> {
     let root = project_root();
     let dir = root.join("target").join("build-weight");
     fs::create_dir_all(&dir)?;
-    let subjects = subjects(&root);
+    let subjects = match only {
+        Some(name) => only_subjects(&root, name)?,
+        None => subjects(&root),
+    };
     let mut best: Vec<Option<Measure>> = subjects.iter().map(|_| None).collect();
     for round in 0..rounds {
         for ((name, dep), best) in subjects.iter().zip(&mut best) {
@@ -197,6 +225,10 @@ pub(crate) fn run(rounds: usize) -> Result<(), DynError> {
         }
     }
     writeln!(md, "\nRounds: {rounds}.")?;
+    if only.is_some() {
+        println!("{md}");
+        return Ok(());
+    }
     let out = root.join("docs/results/build-weight.md");
     fs::write(&out, &md)?;
     println!("{md}");

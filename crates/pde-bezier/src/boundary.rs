@@ -5,7 +5,7 @@ use crate::dense::Dense;
 use crate::error::PdeError;
 use crate::problem::SideCurve;
 use crate::space::{End, Space};
-use crate::sparse::{Kind, System};
+use crate::sparse::{Kind, Storage, System};
 use bez_core::Vector3;
 
 /// A side curve expressed in a spline space: coefficients and the fit's max sample error.
@@ -135,7 +135,7 @@ fn fit_samples(
             }
             system.rhs[row] = target.to_array();
         }
-        let solved = match system.solve(Kind::LeastSquares, "boundary fit") {
+        let solved = match system.solve(Kind::LeastSquares, Storage::Auto, "boundary fit") {
             Err(PdeError::Undetermined { .. }) => return Err(too_few),
             other => other?,
         };

@@ -63,11 +63,16 @@ mod symbol;
 pub use crate::error::PdeError;
 pub use crate::grid::{ErrorNorms, MAX_ERROR_GRID, PatchGrid};
 pub use crate::iges::{read_iges, write_iges};
-pub use crate::limits::{MAX_COEFFICIENTS, MAX_LOCAL_ENTRIES, MAX_PATCHES, MAX_SOLVE_DEGREE};
+pub use crate::limits::{
+    MAX_COEFFICIENTS, MAX_DENSE_ENTRIES, MAX_LOCAL_ENTRIES, MAX_PATCHES, MAX_SOLVE_DEGREE,
+};
 pub use crate::manufactured::{apply_operator, side_of};
 pub use crate::problem::{Discretization, MAX_JET, Operator, Problem, Side, SideCurve, Term};
 pub use crate::solve::{Assembly, Method, Solution, solve};
-pub use crate::sparse::CONDITION_LIMIT;
+pub use crate::sparse::{
+    CONDITION_LIMIT, DENSE_LEAST_SQUARES_UNKNOWNS, DENSE_SQUARE_UNKNOWNS, DENSE_SYMMETRIC_UNKNOWNS,
+    Storage,
+};
 pub use crate::spline_surface::BSplineSurface;
 pub use crate::step::{read_step, write_step};
 

@@ -17,6 +17,10 @@ pub const MAX_COEFFICIENTS: usize = 1 << 20;
 /// The largest number of stored local-map entries, P_u P_v ((n+1)(m+1))², about 128 MiB.
 pub const MAX_LOCAL_ENTRIES: usize = 1 << 24;
 
+/// The largest dense system (rows · unknowns, about 128 MiB) a solve forced to
+/// [`crate::Storage::Dense`] may allocate.
+pub const MAX_DENSE_ENTRIES: usize = 1 << 24;
+
 /// Checks the sizes a discretization asks for against the limits above.
 ///
 /// # Errors

@@ -2,7 +2,8 @@
 //!
 //! Every global system is sparse: each patch touches only the (n+1)(m+1) spline
 //! coefficients of its support, so assembly is linear in the number of patches and the
-//! solves are sparse LU (Galerkin, collocation) or sparse Householder QR (the two least
+//! solves are sparse Cholesky (Galerkin with every side fixed or periodic, when the system is
+//! definite), sparse LU (collocation, other Galerkin systems) or sparse Householder QR (the two least
 //! squares methods, which never form normal equations).
 
 use crate::bernstein_ops::{
@@ -15,7 +16,7 @@ use crate::grid::PatchGrid;
 use crate::limits;
 use crate::problem::{Discretization, Problem, Side};
 use crate::space::{End, Space};
-use crate::sparse::{Kind, System};
+use crate::sparse::{Kind, Storage, System};
 use crate::spline_surface::BSplineSurface;
 use bez_core::{BezierSurface, Vector3};
 
@@ -77,7 +78,8 @@ pub struct Solution {
     pub boundary_fit_error: f64,
     /// Number of free control points (unknowns per coordinate).
     pub unknowns: usize,
-    /// Estimated condition number of the solved (row- and column-scaled) system: the
+    /// Estimated condition number of the solved (scaled: unit diagonal for a symmetric
+    /// definite system, else unit rows and columns) system: the
     /// Frobenius condition number ‖A‖_F ‖A⁺‖_F ≥ κ₂, from random probes (1 when there is
     /// nothing to solve). About log₁₀ of it digits of the coefficients may be lost.
     pub condition: f64,
@@ -363,6 +365,17 @@ impl Assembly {
     /// [`PdeError::IllConditioned`] when its condition estimate is above
     /// [`crate::CONDITION_LIMIT`].
     pub fn solve(&self, method: Method) -> Result<Solution, PdeError> {
+        self.solve_with(method, Storage::Auto)
+    }
+
+    /// [`Assembly::solve`] with the storage of the linear system chosen by the caller:
+    /// [`Storage::Auto`] (what `solve` does) picks the faster of dense and sparse by the
+    /// number of unknowns; [`Storage::Dense`] and [`Storage::Sparse`] force one, for
+    /// measurements and comparisons. The answers agree to rounding.
+    ///
+    /// # Errors
+    /// Those of [`Assembly::solve`].
+    pub fn solve_with(&self, method: Method, storage: Storage) -> Result<Solution, PdeError> {
         let n_all = self.fixed.len();
         let mut index = vec![usize::MAX; n_all];
         let mut free = Vec::new();
@@ -378,13 +391,24 @@ impl Assembly {
         if nf > 0 {
             let (system, kind) = match method {
                 Method::Collocation => (self.collocation_system(&index, nf), Kind::Square),
-                Method::Galerkin => (self.galerkin_system(&index, nf), Kind::Square),
+                // With every side fixed or periodic the free test functions vanish on the
+                // boundary with their first k/2 − 1 derivatives, so integration by parts
+                // makes ∫∫ φ L ψ symmetric (every term has even order): Cholesky when ±A is
+                // also definite.
+                Method::Galerkin => (
+                    self.galerkin_system(&index, nf),
+                    if self.determined {
+                        Kind::Symmetric
+                    } else {
+                        Kind::Square
+                    },
+                ),
                 Method::BernsteinLeastSquares | Method::IntegralLeastSquares => (
                     self.least_squares_system(method, &index, nf),
                     Kind::LeastSquares,
                 ),
             };
-            let solved = match system.solve(kind, method.name()) {
+            let solved = match system.solve(kind, storage, method.name()) {
                 // Well-posed boundary data: a finite but huge estimate is conditioning.
                 Err(PdeError::Undetermined {
                     method,

@@ -14,10 +14,11 @@ use std::time::{Duration, Instant};
 use bez_core::{BezierCurve, BezierSurface, Vector3};
 use common::random_surface;
 use pde_bezier::{
-    Assembly, BSplineSurface, CONDITION_LIMIT, Discretization, ErrorNorms, MAX_COEFFICIENTS,
+    Assembly, BSplineSurface, CONDITION_LIMIT, DENSE_LEAST_SQUARES_UNKNOWNS, DENSE_SQUARE_UNKNOWNS,
+    DENSE_SYMMETRIC_UNKNOWNS, Discretization, ErrorNorms, MAX_COEFFICIENTS, MAX_DENSE_ENTRIES,
     MAX_ERROR_GRID, MAX_JET, MAX_LOCAL_ENTRIES, MAX_PATCHES, MAX_SOLVE_DEGREE, Method, Operator,
-    PatchGrid, PdeError, Problem, Side, SideCurve, Solution, Term, apply_operator, read_iges,
-    read_step, side_of, solve, write_iges, write_step,
+    PatchGrid, PdeError, Problem, Side, SideCurve, Solution, Storage, Term, apply_operator,
+    read_iges, read_step, side_of, solve, write_iges, write_step,
 };
 use proptest::prelude::*;
 
@@ -131,6 +132,17 @@ proptest! {
                     if let Ok(sol) = assembly.solve(method) {
                         assert_finite_solution(&sol);
                     }
+                    // Forced storage, only where a dense matrix stays small.
+                    let storages: &[Storage] = if assembly.unknowns() <= 4 * DENSE_SQUARE_UNKNOWNS {
+                        &[Storage::Dense, Storage::Sparse]
+                    } else {
+                        &[Storage::Sparse]
+                    };
+                    for &storage in storages {
+                        if let Ok(sol) = assembly.solve_with(method, storage) {
+                            assert_finite_solution(&sol);
+                        }
+                    }
                 }
             }
             Err(e) => {
@@ -223,7 +235,30 @@ fn sizes_above_the_limits_are_errors() {
         let err = Assembly::new(&p, &disc).unwrap_err();
         assert!(matches!(err, PdeError::TooLarge { .. }), "{disc:?}: {err}");
     }
-    const { assert!(MAX_COEFFICIENTS > 0 && MAX_LOCAL_ENTRIES > 0 && CONDITION_LIMIT > 1.0) };
+    // A forced dense solve of 96² unknowns would need 85 million entries.
+    let assembly = Assembly::new(
+        &p,
+        &Discretization {
+            patches_u: 24,
+            patches_v: 24,
+            smoothness_u: 1,
+            smoothness_v: 1,
+            ..Discretization::single(5, 5)
+        },
+    )
+    .unwrap();
+    assert_eq!(assembly.unknowns(), 96 * 96);
+    match assembly.solve_with(Method::Galerkin, Storage::Dense) {
+        Err(PdeError::TooLarge { value, limit, .. }) => {
+            assert_eq!((value, limit), (96usize.pow(4), MAX_DENSE_ENTRIES));
+        }
+        other => panic!("{other:?}"),
+    }
+    const {
+        assert!(MAX_COEFFICIENTS > 0 && MAX_LOCAL_ENTRIES > 0 && CONDITION_LIMIT > 1.0);
+        assert!(MAX_DENSE_ENTRIES > DENSE_SQUARE_UNKNOWNS * DENSE_SQUARE_UNKNOWNS);
+        assert!(DENSE_SYMMETRIC_UNKNOWNS > 0 && DENSE_LEAST_SQUARES_UNKNOWNS > 0);
+    };
 }
 
 /// Deserialization validates like the constructors.

@@ -12,7 +12,7 @@ mod bez_subdiv_per_point;
 mod class_a;
 mod lambda_bezier;
 mod pde_bezier;
-mod pde_bezier_scale;
+pub(crate) mod pde_bezier_scale;
 mod subdiv_fit;
 mod subdiv_fit_glyphs;
 mod subdiv_fit_kurbo;

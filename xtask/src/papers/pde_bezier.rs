@@ -318,6 +318,7 @@ pub(crate) fn tables() -> Result<Vec<Table>, DynError> {
         error_table(&rows, false),
         convergence_table()?,
         super::pde_bezier_scale::scale_table()?,
+        super::pde_bezier_scale::crossover_table()?,
     ])
 }
 

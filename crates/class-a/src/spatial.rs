@@ -116,6 +116,23 @@ struct Branch {
     theta: f64,
 }
 
+/// One grid column log s of the Newton-start grid, with the quantities every row shares:
+/// r = e^{−|log s|} and Σ_{j<n} rʲ.
+#[derive(Debug, Clone, Copy, Default)]
+struct Column {
+    log_s: f64,
+    r: f64,
+    real: f64,
+}
+
+impl Column {
+    fn new(log_s: f64, n: usize) -> Self {
+        let r = (-log_s.abs()).exp();
+        let real = (0..n).fold((0.0, 1.0), |(sum, p), _| (sum + p, p * r)).0;
+        Self { log_s, r, real }
+    }
+}
+
 impl Setup {
     fn new(a: &[Vector3; 4], degree: usize) -> Result<Self, ClassAError> {
         crate::error::check_degree(degree, 2)?;
@@ -183,15 +200,17 @@ impl Setup {
         }
     }
 
-    /// The frame components of Σ along one grid row (fixed φ and k), for every log s in
-    /// `log_s`: (Σ·e₁, Σ·e₂, Σ·ĉ) for an orthonormal frame (e₁, e₂, ĉ) with ĉ the chord
-    /// direction (Σ divided by max(1, s)ⁿ⁻¹, as in [`Setup::scaled_sum`]). Smooth in
-    /// (φ, log s); Σ ∥ chord with the same sense iff the first two vanish and the third is
-    /// positive. The row's frame products and e^{±iθ} are formed once.
+    /// The frame components of Σ along one grid row (fixed φ and k), for every grid column:
+    /// (Σ·e₁, Σ·e₂, Σ·ĉ) for an orthonormal frame (e₁, e₂, ĉ) with ĉ the chord direction (Σ
+    /// divided by max(1, s)ⁿ⁻¹, as in [`Setup::scaled_sum`]). Smooth in (φ, log s); Σ ∥ chord
+    /// with the same sense iff the first two vanish and the third is positive. The row's frame
+    /// products and e^{±iθ} are formed once; the columns' sums Σ (r e^{±iθ})ʲ advance together
+    /// (independent chains the processor overlaps), each term by term in the order of
+    /// [`geometric_sums`].
     fn row_conditions(
         &self,
         b: &Branch,
-        log_s: &[f64],
+        columns: &[Column; GRID.1],
         frame: &[Vector3; 3],
         out: &mut [[f64; 3]],
     ) {
@@ -203,21 +222,31 @@ impl Setup {
         let (fu, fp, fq) = (along(&u), along(&p), along(&q));
         let (sin, cos) = b.theta.sin_cos();
         let turn = Complex::from_polar(1.0, b.theta * (self.n - 1) as f64);
-        for (cell, &ls) in out.iter_mut().zip(log_s) {
-            let r = (-ls.abs()).exp();
-            let q = Complex::new(r * cos, if ls <= 0.0 { r * sin } else { -r * sin });
-            let (mut real, mut complex) = (0.0, Complex::new(0.0, 0.0));
-            let (mut rp, mut cp) = (1.0, Complex::new(1.0, 0.0));
-            for _ in 0..self.n {
-                real += rp;
-                complex += cp;
-                rp *= r;
-                cp *= q;
+        let ratio = columns.map(|c| {
+            Complex::new(
+                c.r * cos,
+                if c.log_s <= 0.0 {
+                    c.r * sin
+                } else {
+                    -c.r * sin
+                },
+            )
+        });
+        let mut power = [Complex::new(1.0, 0.0); GRID.1];
+        let mut sum = [Complex::new(0.0, 0.0); GRID.1];
+        for _ in 0..self.n {
+            for ((sum, power), ratio) in sum.iter_mut().zip(&mut power).zip(&ratio) {
+                *sum += *power;
+                *power *= *ratio;
             }
-            if ls > 0.0 {
-                complex *= turn;
-            }
-            let axial = a * real;
+        }
+        for ((cell, column), complex) in out.iter_mut().zip(columns).zip(sum) {
+            let complex = if column.log_s > 0.0 {
+                complex * turn
+            } else {
+                complex
+            };
+            let axial = a * column.real;
             for m in 0..3 {
                 cell[m] = axial * fu[m] + complex.re * fp[m] + complex.im * fq[m];
             }
@@ -591,7 +620,8 @@ impl TypicalSpatial {
         let phi_at = |i: usize| -FRAC_PI_2 + PI * i as f64 / np as f64;
         let ls_at = |j: usize| -span + 2.0 * span * j as f64 / (ns - 1) as f64;
         let frame = setup.chord_frame();
-        let log_s: Vec<f64> = (0..ns).map(ls_at).collect();
+        let columns: [Column; GRID.1] = std::array::from_fn(|j| Column::new(ls_at(j), degree));
+        let mut errors = vec![0.0; (np + 1) * ns];
         for &k in ks {
             let rows: Vec<Branch> = (0..=np).map(|i| setup.branch(phi_at(i), k)).collect();
             let thetas: Vec<f64> = rows.iter().map(|b| b.theta).collect();
@@ -604,10 +634,13 @@ impl TypicalSpatial {
             for (i, b) in rows.iter().enumerate() {
                 let row = &mut grid[i * ns..(i + 1) * ns];
                 if near(i) {
-                    setup.row_conditions(b, &log_s, &frame, row);
+                    setup.row_conditions(b, &columns, &frame, row);
                 } else {
                     row.fill([f64::NAN; 3]);
                 }
+            }
+            for (e, c) in errors.iter_mut().zip(&grid) {
+                *e = start_error(c);
             }
             let mut starts: Vec<(f64, f64)> = Vec::new();
             for i in 0..np {
@@ -632,7 +665,7 @@ impl TypicalSpatial {
             // Crossings thinner than a cell (a zero curve folding back inside it) show as
             // local minima of the direction error instead.
             starts.extend(
-                local_minima(&grid, np, ns, &thetas)
+                local_minima(&errors, np, ns, &thetas)
                     .into_iter()
                     .map(|(i, j)| (i as f64, j as f64)),
             );
@@ -763,10 +796,25 @@ fn direction_error(c: &[f64; 3]) -> f64 {
     }
 }
 
-/// Cells (i, j) whose lower corner is a local minimum of the direction error below
-/// [`MINIMUM_START`] among its neighbours, at most [`MINIMUM_STARTS`], best first.
-fn local_minima(grid: &[[f64; 3]], np: usize, ns: usize, thetas: &[f64]) -> Vec<(usize, usize)> {
-    let err = |i: usize, j: usize| direction_error(&grid[i * ns + j]);
+/// [`direction_error`] where it can be at most [`MINIMUM_START`], else 2 (no local minimum
+/// there, and larger than every error that can be one, so the comparisons of
+/// [`local_minima`] come out as with the exact errors). The test needs no square root: an error
+/// e ≤ 0.3 has cos ∠(Σ, ĉ) = 1 − e²/2 ≥ 0.955, so a node with Σ·ĉ ≤ 0 or
+/// (Σ·ĉ)² < 0.9 |Σ|² (error above 0.32) is skipped.
+fn start_error(c: &[f64; 3]) -> f64 {
+    let norm2 = c[0] * c[0] + c[1] * c[1] + c[2] * c[2];
+    if c[2] > 0.0 && c[2] * c[2] >= 0.9 * norm2 {
+        direction_error(c)
+    } else {
+        2.0
+    }
+}
+
+/// Cells (i, j) whose lower corner is a local minimum of the direction error (`errors`, one per
+/// grid node) below [`MINIMUM_START`] among its neighbours, at most [`MINIMUM_STARTS`], best
+/// first.
+fn local_minima(errors: &[f64], np: usize, ns: usize, thetas: &[f64]) -> Vec<(usize, usize)> {
+    let err = |i: usize, j: usize| errors[i * ns + j];
     let mut minima: Vec<(f64, usize, usize)> = Vec::new();
     for (i, theta) in thetas.iter().enumerate().take(np) {
         if theta.abs() >= FRAC_PI_2 {

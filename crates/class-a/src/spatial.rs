@@ -117,11 +117,12 @@ struct Branch {
 }
 
 /// One grid column log s of the Newton-start grid, with the quantities every row shares:
-/// r = e^{−|log s|} and Σ_{j<n} rʲ.
+/// r = e^{−|log s|}, rⁿ and Σ_{j<n} rʲ.
 #[derive(Debug, Clone, Copy, Default)]
 struct Column {
     log_s: f64,
     r: f64,
+    r_n: f64,
     real: f64,
 }
 
@@ -129,7 +130,13 @@ impl Column {
     fn new(log_s: f64, n: usize) -> Self {
         let r = (-log_s.abs()).exp();
         let real = (0..n).fold((0.0, 1.0), |(sum, p), _| (sum + p, p * r)).0;
-        Self { log_s, r, real }
+        let r_n = r.powi(i32::try_from(n).unwrap_or(i32::MAX));
+        Self {
+            log_s,
+            r,
+            r_n,
+            real,
+        }
     }
 }
 
@@ -232,12 +239,31 @@ impl Setup {
                 },
             )
         });
-        let mut power = [Complex::new(1.0, 0.0); GRID.1];
         let mut sum = [Complex::new(0.0, 0.0); GRID.1];
-        for _ in 0..self.n {
-            for ((sum, power), ratio) in sum.iter_mut().zip(&mut power).zip(&ratio) {
-                *sum += *power;
-                *power *= *ratio;
+        if self.n >= ROW_CLOSED_FORM_DEGREE {
+            // (1 − qⁿ)/(1 − q) with qⁿ = rⁿ e^{±inθ}; cells too close to q = 1 term by term.
+            let (sin_n, cos_n) = (b.theta * self.n as f64).sin_cos();
+            for ((sum, column), ratio) in sum.iter_mut().zip(columns).zip(&ratio) {
+                let gap = Complex::new(1.0, 0.0) - *ratio;
+                if gap.norm_sqr() >= ROW_CLOSED_FORM_GAP * ROW_CLOSED_FORM_GAP {
+                    let im = if column.log_s <= 0.0 { sin_n } else { -sin_n };
+                    let power = Complex::new(column.r_n * cos_n, column.r_n * im);
+                    *sum = (Complex::new(1.0, 0.0) - power) / gap;
+                } else {
+                    let mut power = Complex::new(1.0, 0.0);
+                    for _ in 0..self.n {
+                        *sum += power;
+                        power *= *ratio;
+                    }
+                }
+            }
+        } else {
+            let mut power = [Complex::new(1.0, 0.0); GRID.1];
+            for _ in 0..self.n {
+                for ((sum, power), ratio) in sum.iter_mut().zip(&mut power).zip(&ratio) {
+                    *sum += *power;
+                    *power *= *ratio;
+                }
             }
         }
         for ((cell, column), complex) in out.iter_mut().zip(columns).zip(sum) {
@@ -309,6 +335,15 @@ impl Setup {
         lo..=hi
     }
 }
+
+/// From this degree on, the grid rows sum Σ (r e^{±iθ})ʲ in closed form (1 − qⁿ)/(1 − q) (one
+/// complex division per node instead of n steps), except where |1 − q| is below
+/// [`ROW_CLOSED_FORM_GAP`]. The grid only places Newton starts, which converge to the same
+/// solutions; the rounding of the closed form (relative ε/|1 − q|) moves a node's sign only where
+/// a condition is within that of zero.
+const ROW_CLOSED_FORM_DEGREE: usize = 8;
+/// See [`ROW_CLOSED_FORM_DEGREE`].
+const ROW_CLOSED_FORM_GAP: f64 = 0.05;
 
 /// Grid over (φ, log s) per branch for the Newton starts.
 const GRID: (usize, usize) = (36, 20);
@@ -622,6 +657,7 @@ impl TypicalSpatial {
         let frame = setup.chord_frame();
         let columns: [Column; GRID.1] = std::array::from_fn(|j| Column::new(ls_at(j), degree));
         let mut errors = vec![0.0; (np + 1) * ns];
+        let mut signs = vec![0u8; (np + 1) * ns];
         for &k in ks {
             let rows: Vec<Branch> = (0..=np).map(|i| setup.branch(phi_at(i), k)).collect();
             let thetas: Vec<f64> = rows.iter().map(|b| b.theta).collect();
@@ -639,8 +675,9 @@ impl TypicalSpatial {
                     row.fill([f64::NAN; 3]);
                 }
             }
-            for (e, c) in errors.iter_mut().zip(&grid) {
+            for ((e, sign), c) in errors.iter_mut().zip(&mut signs).zip(&grid) {
                 *e = start_error(c);
+                *sign = sign_bits(c);
             }
             let mut starts: Vec<(f64, f64)> = Vec::new();
             for i in 0..np {
@@ -648,16 +685,11 @@ impl TypicalSpatial {
                     continue;
                 }
                 for j in 0..ns - 1 {
-                    let corners = [
-                        grid[i * ns + j],
-                        grid[i * ns + j + 1],
-                        grid[(i + 1) * ns + j],
-                        grid[(i + 1) * ns + j + 1],
-                    ];
-                    let changes = |m: usize| {
-                        corners.iter().any(|c| c[m] <= 0.0) && corners.iter().any(|c| c[m] >= 0.0)
-                    };
-                    if changes(0) && changes(1) {
+                    let corners = signs[i * ns + j]
+                        | signs[i * ns + j + 1]
+                        | signs[(i + 1) * ns + j]
+                        | signs[(i + 1) * ns + j + 1];
+                    if corners == BOTH_CHANGE {
                         starts.push((i as f64 + 0.5, j as f64 + 0.5));
                     }
                 }
@@ -796,6 +828,19 @@ fn direction_error(c: &[f64; 3]) -> f64 {
     }
 }
 
+/// The signs of the two conditions at a grid node: bit 2m for component m ≤ 0, bit 2m + 1 for
+/// component m ≥ 0 (m = 0, 1; a zero sets both, NaN neither). A cell holds a sign change of
+/// both components iff the union of its corners' bits is [`BOTH_CHANGE`].
+fn sign_bits(c: &[f64; 3]) -> u8 {
+    u8::from(c[0] <= 0.0)
+        | (u8::from(c[0] >= 0.0) << 1)
+        | (u8::from(c[1] <= 0.0) << 2)
+        | (u8::from(c[1] >= 0.0) << 3)
+}
+
+/// All four bits of [`sign_bits`].
+const BOTH_CHANGE: u8 = 0b1111;
+
 /// [`direction_error`] where it can be at most [`MINIMUM_START`], else 2 (no local minimum
 /// there, and larger than every error that can be one, so the comparisons of
 /// [`local_minima`] come out as with the exact errors). The test needs no square root: an error
@@ -884,4 +929,48 @@ fn newton(setup: &Setup, mut phi: f64, mut ls: f64, k: i64) -> (f64, f64, f64) {
         }
     }
     (phi, ls, r.norm())
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// The grid rows (shared columns, closed form from degree 8) agree with the term-by-term
+    /// [`Setup::scaled_sum`] at every node, including the nodes next to q = 1.
+    #[test]
+    fn grid_rows_match_the_term_by_term_sum() {
+        let a = [
+            Vector3::new(0.0, 0.0, 0.0),
+            Vector3::new(1.0, 0.0, 0.2),
+            Vector3::new(6.21, 6.54, 1.79),
+            Vector3::new(6.12, 9.44, 2.73),
+        ];
+        for n in [3, 7, 8, 13, 20, 31] {
+            let setup = Setup::new(&a, n).unwrap();
+            let frame = setup.chord_frame();
+            let span = (LOG_RATIO_SPAN / (n - 1) as f64).min(4.0);
+            let columns: [Column; GRID.1] = std::array::from_fn(|j| {
+                Column::new(-span + 2.0 * span * j as f64 / (GRID.1 - 1) as f64, n)
+            });
+            for k in setup.branches() {
+                for phi in [-1.5, -0.7, 0.0, 0.3, 1.2] {
+                    let b = setup.branch(phi, k);
+                    let mut row = [[0.0; 3]; GRID.1];
+                    setup.row_conditions(&b, &columns, &frame, &mut row);
+                    for (cell, column) in row.iter().zip(&columns) {
+                        let sum = setup.scaled_sum(&b, column.log_s);
+                        for m in 0..3 {
+                            let want = sum.dot(&frame[m]);
+                            assert!(
+                                (cell[m] - want).abs() <= 1e-12 * sum.norm(),
+                                "n {n} k {k} phi {phi} log s {}: {} vs {want}",
+                                column.log_s,
+                                cell[m]
+                            );
+                        }
+                    }
+                }
+            }
+        }
+    }
 }

@@ -54,13 +54,6 @@ pub fn rotation(axis: &Vector3, theta: f64) -> Matrix3 {
     Matrix3::identity() + k * theta.sin() + k * k * (1.0 - theta.cos())
 }
 
-/// Eq. (14), corrected: u = (v₀×v₁)/|v₀×v₁| cos φ + (v₀+v₁)/|v₀+v₁| sin φ.
-fn axis_of(v0: &Vector3, v1: &Vector3, phi: f64) -> Vector3 {
-    let c = v0.cross(v1);
-    let b = v0 + v1;
-    c / c.norm() * phi.cos() + b / b.norm() * phi.sin()
-}
-
 /// Angle ψ about u from the projection of v₀ to that of v₁, in (−π, π].
 fn turn_about(u: &Vector3, v0: &Vector3, v1: &Vector3) -> f64 {
     let p0 = v0 - u * u.dot(v0);
@@ -105,6 +98,11 @@ struct Setup {
     v0: Vector3,
     v1: Vector3,
     chord: Vector3,
+    /// ĉ = chord / |chord|.
+    unit_chord: Vector3,
+    /// (v₀×v₁)/|v₀×v₁| and (v₀+v₁)/|v₀+v₁|, the axis basis of eq. (14).
+    normal: Vector3,
+    bisector: Vector3,
     n: usize,
 }
 
@@ -157,10 +155,14 @@ impl Setup {
         if v0.cross(&v1).norm() < 1e-12 {
             return Err(ClassAError::ParallelTangents { cos_angle });
         }
+        let (c, b) = (v0.cross(&v1), v0 + v1);
         Ok(Self {
             v0,
             v1,
             chord,
+            unit_chord: chord / chord.norm(),
+            normal: c / c.norm(),
+            bisector: b / b.norm(),
             n: degree,
         })
     }
@@ -169,7 +171,8 @@ impl Setup {
     /// never reaches 0 (v₀ ≠ v₁), so it is continuous in φ, ψ(φ + π) = 2π − ψ(φ) with
     /// u(φ + π) = −u(φ), and (φ + π, k) is the rotation (φ, −1 − k).
     fn branch(&self, phi: f64, k: i64) -> Branch {
-        let axis = axis_of(&self.v0, &self.v1, phi);
+        // Eq. (14), corrected: u = (v₀×v₁)/|v₀×v₁| cos φ + (v₀+v₁)/|v₀+v₁| sin φ.
+        let axis = self.normal * phi.cos() + self.bisector * phi.sin();
         let psi = turn_about(&axis, &self.v0, &self.v1).rem_euclid(TAU);
         Branch {
             axis,
@@ -198,7 +201,7 @@ impl Setup {
     /// Residual: unit(Σ) − unit(chord), a 3-vector (2 independent components).
     fn residual(&self, phi: f64, log_s: f64, k: i64) -> Vector3 {
         let sum = self.scaled_sum(&self.branch(phi, k), log_s);
-        let c = self.chord / self.chord.norm();
+        let c = self.unit_chord;
         let n = sum.norm();
         if n.is_finite() && n > 0.0 {
             sum / n - c
@@ -281,7 +284,7 @@ impl Setup {
 
     /// An orthonormal frame (e₁, e₂, ĉ) with ĉ the unit chord.
     fn chord_frame(&self) -> [Vector3; 3] {
-        let c = self.chord / self.chord.norm();
+        let c = self.unit_chord;
         let helper = if c.x().abs() < 0.6 {
             Vector3::new(1.0, 0.0, 0.0)
         } else {
@@ -760,7 +763,7 @@ impl TypicalSpatial {
                     return Ok(4.0);
                 }
                 let sum = self.0.scaled_sum(&self.0.branch(p[0], 0), p[1].ln());
-                let c = self.0.chord / self.0.chord.norm();
+                let c = self.0.unit_chord;
                 let v = 1.0 - sum.dot(&c) / sum.norm();
                 Ok(if v.is_finite() { v } else { 4.0 })
             }

@@ -200,7 +200,12 @@ impl Setup {
 
     /// Residual: unit(Σ) − unit(chord), a 3-vector (2 independent components).
     fn residual(&self, phi: f64, log_s: f64, k: i64) -> Vector3 {
-        let sum = self.scaled_sum(&self.branch(phi, k), log_s);
+        self.branch_residual(&self.branch(phi, k), log_s)
+    }
+
+    /// [`Setup::residual`] on a rotation already formed (Newton's steps in log s share it).
+    fn branch_residual(&self, b: &Branch, log_s: f64) -> Vector3 {
+        let sum = self.scaled_sum(b, log_s);
         let c = self.unit_chord;
         let n = sum.norm();
         if n.is_finite() && n > 0.0 {
@@ -901,7 +906,9 @@ fn newton(setup: &Setup, mut phi: f64, mut ls: f64, k: i64) -> (f64, f64, f64) {
         }
         let h = 1e-7;
         let jp = (setup.residual(phi + h, ls, k) - setup.residual(phi - h, ls, k)) / (2.0 * h);
-        let js = (setup.residual(phi, ls + h, k) - setup.residual(phi, ls - h, k)) / (2.0 * h);
+        let here = setup.branch(phi, k);
+        let js = (setup.branch_residual(&here, ls + h) - setup.branch_residual(&here, ls - h))
+            / (2.0 * h);
         // Normal equations of the 3×2 least-squares step.
         let (a, b, c) = (jp.dot(&jp), jp.dot(&js), js.dot(&js));
         let (g0, g1) = (jp.dot(&r), js.dot(&r));

@@ -54,13 +54,6 @@ pub fn rotation(axis: &Vector3, theta: f64) -> Matrix3 {
     Matrix3::identity() + k * theta.sin() + k * k * (1.0 - theta.cos())
 }
 
-/// Eq. (14), corrected: u = (v₀×v₁)/|v₀×v₁| cos φ + (v₀+v₁)/|v₀+v₁| sin φ.
-fn axis_of(v0: &Vector3, v1: &Vector3, phi: f64) -> Vector3 {
-    let c = v0.cross(v1);
-    let b = v0 + v1;
-    c / c.norm() * phi.cos() + b / b.norm() * phi.sin()
-}
-
 /// Angle ψ about u from the projection of v₀ to that of v₁, in (−π, π].
 fn turn_about(u: &Vector3, v0: &Vector3, v1: &Vector3) -> f64 {
     let p0 = v0 - u * u.dot(v0);
@@ -105,6 +98,11 @@ struct Setup {
     v0: Vector3,
     v1: Vector3,
     chord: Vector3,
+    /// ĉ = chord / |chord|.
+    unit_chord: Vector3,
+    /// (v₀×v₁)/|v₀×v₁| and (v₀+v₁)/|v₀+v₁|, the axis basis of eq. (14).
+    normal: Vector3,
+    bisector: Vector3,
     n: usize,
 }
 
@@ -114,6 +112,30 @@ struct Setup {
 struct Branch {
     axis: Vector3,
     theta: f64,
+}
+
+/// One grid column log s of the Newton-start grid, with the quantities every row shares:
+/// r = e^{−|log s|}, rⁿ and Σ_{j<n} rʲ.
+#[derive(Debug, Clone, Copy, Default)]
+struct Column {
+    log_s: f64,
+    r: f64,
+    r_n: f64,
+    real: f64,
+}
+
+impl Column {
+    fn new(log_s: f64, n: usize) -> Self {
+        let r = (-log_s.abs()).exp();
+        let real = (0..n).fold((0.0, 1.0), |(sum, p), _| (sum + p, p * r)).0;
+        let r_n = r.powi(i32::try_from(n).unwrap_or(i32::MAX));
+        Self {
+            log_s,
+            r,
+            r_n,
+            real,
+        }
+    }
 }
 
 impl Setup {
@@ -133,10 +155,14 @@ impl Setup {
         if v0.cross(&v1).norm() < 1e-12 {
             return Err(ClassAError::ParallelTangents { cos_angle });
         }
+        let (c, b) = (v0.cross(&v1), v0 + v1);
         Ok(Self {
             v0,
             v1,
             chord,
+            unit_chord: chord / chord.norm(),
+            normal: c / c.norm(),
+            bisector: b / b.norm(),
             n: degree,
         })
     }
@@ -145,7 +171,8 @@ impl Setup {
     /// never reaches 0 (v₀ ≠ v₁), so it is continuous in φ, ψ(φ + π) = 2π − ψ(φ) with
     /// u(φ + π) = −u(φ), and (φ + π, k) is the rotation (φ, −1 − k).
     fn branch(&self, phi: f64, k: i64) -> Branch {
-        let axis = axis_of(&self.v0, &self.v1, phi);
+        // Eq. (14), corrected: u = (v₀×v₁)/|v₀×v₁| cos φ + (v₀+v₁)/|v₀+v₁| sin φ.
+        let axis = self.normal * phi.cos() + self.bisector * phi.sin();
         let psi = turn_about(&axis, &self.v0, &self.v1).rem_euclid(TAU);
         Branch {
             axis,
@@ -173,8 +200,13 @@ impl Setup {
 
     /// Residual: unit(Σ) − unit(chord), a 3-vector (2 independent components).
     fn residual(&self, phi: f64, log_s: f64, k: i64) -> Vector3 {
-        let sum = self.scaled_sum(&self.branch(phi, k), log_s);
-        let c = self.chord / self.chord.norm();
+        self.branch_residual(&self.branch(phi, k), log_s)
+    }
+
+    /// [`Setup::residual`] on a rotation already formed (Newton's steps in log s share it).
+    fn branch_residual(&self, b: &Branch, log_s: f64) -> Vector3 {
+        let sum = self.scaled_sum(b, log_s);
+        let c = self.unit_chord;
         let n = sum.norm();
         if n.is_finite() && n > 0.0 {
             sum / n - c
@@ -183,15 +215,17 @@ impl Setup {
         }
     }
 
-    /// The frame components of Σ along one grid row (fixed φ and k), for every log s in
-    /// `log_s`: (Σ·e₁, Σ·e₂, Σ·ĉ) for an orthonormal frame (e₁, e₂, ĉ) with ĉ the chord
-    /// direction (Σ divided by max(1, s)ⁿ⁻¹, as in [`Setup::scaled_sum`]). Smooth in
-    /// (φ, log s); Σ ∥ chord with the same sense iff the first two vanish and the third is
-    /// positive. The row's frame products and e^{±iθ} are formed once.
+    /// The frame components of Σ along one grid row (fixed φ and k), for every grid column:
+    /// (Σ·e₁, Σ·e₂, Σ·ĉ) for an orthonormal frame (e₁, e₂, ĉ) with ĉ the chord direction (Σ
+    /// divided by max(1, s)ⁿ⁻¹, as in [`Setup::scaled_sum`]). Smooth in (φ, log s); Σ ∥ chord
+    /// with the same sense iff the first two vanish and the third is positive. The row's frame
+    /// products and e^{±iθ} are formed once; the columns' sums Σ (r e^{±iθ})ʲ advance together
+    /// (independent chains the processor overlaps), each term by term in the order of
+    /// [`geometric_sums`].
     fn row_conditions(
         &self,
         b: &Branch,
-        log_s: &[f64],
+        columns: &[Column; GRID.1],
         frame: &[Vector3; 3],
         out: &mut [[f64; 3]],
     ) {
@@ -203,21 +237,50 @@ impl Setup {
         let (fu, fp, fq) = (along(&u), along(&p), along(&q));
         let (sin, cos) = b.theta.sin_cos();
         let turn = Complex::from_polar(1.0, b.theta * (self.n - 1) as f64);
-        for (cell, &ls) in out.iter_mut().zip(log_s) {
-            let r = (-ls.abs()).exp();
-            let q = Complex::new(r * cos, if ls <= 0.0 { r * sin } else { -r * sin });
-            let (mut real, mut complex) = (0.0, Complex::new(0.0, 0.0));
-            let (mut rp, mut cp) = (1.0, Complex::new(1.0, 0.0));
+        let ratio = columns.map(|c| {
+            Complex::new(
+                c.r * cos,
+                if c.log_s <= 0.0 {
+                    c.r * sin
+                } else {
+                    -c.r * sin
+                },
+            )
+        });
+        let mut sum = [Complex::new(0.0, 0.0); GRID.1];
+        if self.n >= ROW_CLOSED_FORM_DEGREE {
+            // (1 − qⁿ)/(1 − q) with qⁿ = rⁿ e^{±inθ}; cells too close to q = 1 term by term.
+            let (sin_n, cos_n) = (b.theta * self.n as f64).sin_cos();
+            for ((sum, column), ratio) in sum.iter_mut().zip(columns).zip(&ratio) {
+                let gap = Complex::new(1.0, 0.0) - *ratio;
+                if gap.norm_sqr() >= ROW_CLOSED_FORM_GAP * ROW_CLOSED_FORM_GAP {
+                    let im = if column.log_s <= 0.0 { sin_n } else { -sin_n };
+                    let power = Complex::new(column.r_n * cos_n, column.r_n * im);
+                    *sum = (Complex::new(1.0, 0.0) - power) / gap;
+                } else {
+                    let mut power = Complex::new(1.0, 0.0);
+                    for _ in 0..self.n {
+                        *sum += power;
+                        power *= *ratio;
+                    }
+                }
+            }
+        } else {
+            let mut power = [Complex::new(1.0, 0.0); GRID.1];
             for _ in 0..self.n {
-                real += rp;
-                complex += cp;
-                rp *= r;
-                cp *= q;
+                for ((sum, power), ratio) in sum.iter_mut().zip(&mut power).zip(&ratio) {
+                    *sum += *power;
+                    *power *= *ratio;
+                }
             }
-            if ls > 0.0 {
-                complex *= turn;
-            }
-            let axial = a * real;
+        }
+        for ((cell, column), complex) in out.iter_mut().zip(columns).zip(sum) {
+            let complex = if column.log_s > 0.0 {
+                complex * turn
+            } else {
+                complex
+            };
+            let axial = a * column.real;
             for m in 0..3 {
                 cell[m] = axial * fu[m] + complex.re * fp[m] + complex.im * fq[m];
             }
@@ -226,7 +289,7 @@ impl Setup {
 
     /// An orthonormal frame (e₁, e₂, ĉ) with ĉ the unit chord.
     fn chord_frame(&self) -> [Vector3; 3] {
-        let c = self.chord / self.chord.norm();
+        let c = self.unit_chord;
         let helper = if c.x().abs() < 0.6 {
             Vector3::new(1.0, 0.0, 0.0)
         } else {
@@ -280,6 +343,15 @@ impl Setup {
         lo..=hi
     }
 }
+
+/// From this degree on, the grid rows sum Σ (r e^{±iθ})ʲ in closed form (1 − qⁿ)/(1 − q) (one
+/// complex division per node instead of n steps), except where |1 − q| is below
+/// [`ROW_CLOSED_FORM_GAP`]. The grid only places Newton starts, which converge to the same
+/// solutions; the rounding of the closed form (relative ε/|1 − q|) moves a node's sign only where
+/// a condition is within that of zero.
+const ROW_CLOSED_FORM_DEGREE: usize = 4;
+/// See [`ROW_CLOSED_FORM_DEGREE`].
+const ROW_CLOSED_FORM_GAP: f64 = 0.05;
 
 /// Grid over (φ, log s) per branch for the Newton starts.
 const GRID: (usize, usize) = (36, 20);
@@ -591,7 +663,9 @@ impl TypicalSpatial {
         let phi_at = |i: usize| -FRAC_PI_2 + PI * i as f64 / np as f64;
         let ls_at = |j: usize| -span + 2.0 * span * j as f64 / (ns - 1) as f64;
         let frame = setup.chord_frame();
-        let log_s: Vec<f64> = (0..ns).map(ls_at).collect();
+        let columns: [Column; GRID.1] = std::array::from_fn(|j| Column::new(ls_at(j), degree));
+        let mut errors = vec![0.0; (np + 1) * ns];
+        let mut signs = vec![0u8; (np + 1) * ns];
         for &k in ks {
             let rows: Vec<Branch> = (0..=np).map(|i| setup.branch(phi_at(i), k)).collect();
             let thetas: Vec<f64> = rows.iter().map(|b| b.theta).collect();
@@ -604,10 +678,14 @@ impl TypicalSpatial {
             for (i, b) in rows.iter().enumerate() {
                 let row = &mut grid[i * ns..(i + 1) * ns];
                 if near(i) {
-                    setup.row_conditions(b, &log_s, &frame, row);
+                    setup.row_conditions(b, &columns, &frame, row);
                 } else {
                     row.fill([f64::NAN; 3]);
                 }
+            }
+            for ((e, sign), c) in errors.iter_mut().zip(&mut signs).zip(&grid) {
+                *e = start_error(c);
+                *sign = sign_bits(c);
             }
             let mut starts: Vec<(f64, f64)> = Vec::new();
             for i in 0..np {
@@ -615,16 +693,11 @@ impl TypicalSpatial {
                     continue;
                 }
                 for j in 0..ns - 1 {
-                    let corners = [
-                        grid[i * ns + j],
-                        grid[i * ns + j + 1],
-                        grid[(i + 1) * ns + j],
-                        grid[(i + 1) * ns + j + 1],
-                    ];
-                    let changes = |m: usize| {
-                        corners.iter().any(|c| c[m] <= 0.0) && corners.iter().any(|c| c[m] >= 0.0)
-                    };
-                    if changes(0) && changes(1) {
+                    let corners = signs[i * ns + j]
+                        | signs[i * ns + j + 1]
+                        | signs[(i + 1) * ns + j]
+                        | signs[(i + 1) * ns + j + 1];
+                    if corners == BOTH_CHANGE {
                         starts.push((i as f64 + 0.5, j as f64 + 0.5));
                     }
                 }
@@ -632,7 +705,7 @@ impl TypicalSpatial {
             // Crossings thinner than a cell (a zero curve folding back inside it) show as
             // local minima of the direction error instead.
             starts.extend(
-                local_minima(&grid, np, ns, &thetas)
+                local_minima(&errors, np, ns, &thetas)
                     .into_iter()
                     .map(|(i, j)| (i as f64, j as f64)),
             );
@@ -695,7 +768,7 @@ impl TypicalSpatial {
                     return Ok(4.0);
                 }
                 let sum = self.0.scaled_sum(&self.0.branch(p[0], 0), p[1].ln());
-                let c = self.0.chord / self.0.chord.norm();
+                let c = self.0.unit_chord;
                 let v = 1.0 - sum.dot(&c) / sum.norm();
                 Ok(if v.is_finite() { v } else { 4.0 })
             }
@@ -763,10 +836,38 @@ fn direction_error(c: &[f64; 3]) -> f64 {
     }
 }
 
-/// Cells (i, j) whose lower corner is a local minimum of the direction error below
-/// [`MINIMUM_START`] among its neighbours, at most [`MINIMUM_STARTS`], best first.
-fn local_minima(grid: &[[f64; 3]], np: usize, ns: usize, thetas: &[f64]) -> Vec<(usize, usize)> {
-    let err = |i: usize, j: usize| direction_error(&grid[i * ns + j]);
+/// The signs of the two conditions at a grid node: bit 2m for component m ≤ 0, bit 2m + 1 for
+/// component m ≥ 0 (m = 0, 1; a zero sets both, NaN neither). A cell holds a sign change of
+/// both components iff the union of its corners' bits is [`BOTH_CHANGE`].
+fn sign_bits(c: &[f64; 3]) -> u8 {
+    u8::from(c[0] <= 0.0)
+        | (u8::from(c[0] >= 0.0) << 1)
+        | (u8::from(c[1] <= 0.0) << 2)
+        | (u8::from(c[1] >= 0.0) << 3)
+}
+
+/// All four bits of [`sign_bits`].
+const BOTH_CHANGE: u8 = 0b1111;
+
+/// [`direction_error`] where it can be at most [`MINIMUM_START`], else 2 (no local minimum
+/// there, and larger than every error that can be one, so the comparisons of
+/// [`local_minima`] come out as with the exact errors). The test needs no square root: an error
+/// e ≤ 0.3 has cos ∠(Σ, ĉ) = 1 − e²/2 ≥ 0.955, so a node with Σ·ĉ ≤ 0 or
+/// (Σ·ĉ)² < 0.9 |Σ|² (error above 0.32) is skipped.
+fn start_error(c: &[f64; 3]) -> f64 {
+    let norm2 = c[0] * c[0] + c[1] * c[1] + c[2] * c[2];
+    if c[2] > 0.0 && c[2] * c[2] >= 0.9 * norm2 {
+        direction_error(c)
+    } else {
+        2.0
+    }
+}
+
+/// Cells (i, j) whose lower corner is a local minimum of the direction error (`errors`, one per
+/// grid node) below [`MINIMUM_START`] among its neighbours, at most [`MINIMUM_STARTS`], best
+/// first.
+fn local_minima(errors: &[f64], np: usize, ns: usize, thetas: &[f64]) -> Vec<(usize, usize)> {
+    let err = |i: usize, j: usize| errors[i * ns + j];
     let mut minima: Vec<(f64, usize, usize)> = Vec::new();
     for (i, theta) in thetas.iter().enumerate().take(np) {
         if theta.abs() >= FRAC_PI_2 {
@@ -805,7 +906,9 @@ fn newton(setup: &Setup, mut phi: f64, mut ls: f64, k: i64) -> (f64, f64, f64) {
         }
         let h = 1e-7;
         let jp = (setup.residual(phi + h, ls, k) - setup.residual(phi - h, ls, k)) / (2.0 * h);
-        let js = (setup.residual(phi, ls + h, k) - setup.residual(phi, ls - h, k)) / (2.0 * h);
+        let here = setup.branch(phi, k);
+        let js = (setup.branch_residual(&here, ls + h) - setup.branch_residual(&here, ls - h))
+            / (2.0 * h);
         // Normal equations of the 3×2 least-squares step.
         let (a, b, c) = (jp.dot(&jp), jp.dot(&js), js.dot(&js));
         let (g0, g1) = (jp.dot(&r), js.dot(&r));
@@ -836,4 +939,48 @@ fn newton(setup: &Setup, mut phi: f64, mut ls: f64, k: i64) -> (f64, f64, f64) {
         }
     }
     (phi, ls, r.norm())
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// The grid rows (shared columns, closed form from degree 4) agree with the term-by-term
+    /// [`Setup::scaled_sum`] at every node, including the nodes next to q = 1.
+    #[test]
+    fn grid_rows_match_the_term_by_term_sum() {
+        let a = [
+            Vector3::new(0.0, 0.0, 0.0),
+            Vector3::new(1.0, 0.0, 0.2),
+            Vector3::new(6.21, 6.54, 1.79),
+            Vector3::new(6.12, 9.44, 2.73),
+        ];
+        for n in [3, 7, 8, 13, 20, 31] {
+            let setup = Setup::new(&a, n).unwrap();
+            let frame = setup.chord_frame();
+            let span = (LOG_RATIO_SPAN / (n - 1) as f64).min(4.0);
+            let columns: [Column; GRID.1] = std::array::from_fn(|j| {
+                Column::new(-span + 2.0 * span * j as f64 / (GRID.1 - 1) as f64, n)
+            });
+            for k in setup.branches() {
+                for phi in [-1.5, -0.7, 0.0, 0.3, 1.2] {
+                    let b = setup.branch(phi, k);
+                    let mut row = [[0.0; 3]; GRID.1];
+                    setup.row_conditions(&b, &columns, &frame, &mut row);
+                    for (cell, column) in row.iter().zip(&columns) {
+                        let sum = setup.scaled_sum(&b, column.log_s);
+                        for m in 0..3 {
+                            let want = sum.dot(&frame[m]);
+                            assert!(
+                                (cell[m] - want).abs() <= 1e-12 * sum.norm(),
+                                "n {n} k {k} phi {phi} log s {}: {} vs {want}",
+                                column.log_s,
+                                cell[m]
+                            );
+                        }
+                    }
+                }
+            }
+        }
+    }
 }

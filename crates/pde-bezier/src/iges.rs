@@ -183,20 +183,104 @@ fn parse_real(s: &str) -> Result<f64, PdeError> {
     }
 }
 
+/// The parameter and record delimiters declared by the global section (its first two
+/// parameters, each a 1-character Hollerith string such as `1H,` or left empty for the defaults
+/// `,` and `;`).
+fn delimiters(global: &str) -> Result<(u8, u8), PdeError> {
+    let b = global.trim_start().as_bytes();
+    let hollerith = |b: &[u8]| match b {
+        [b'1', b'H' | b'h', c, ..] => Some(*c),
+        _ => None,
+    };
+    let (param, rest) = match hollerith(b) {
+        Some(c) => match b.get(3) {
+            Some(&d) if d == c => (c, &b[4..]),
+            // `1H;;` would end the section with the default parameter delimiter unknown.
+            _ => {
+                return Err(iges_err(
+                    "the global section's parameter delimiter is not followed by itself",
+                ));
+            }
+        },
+        None => match b.first() {
+            Some(b',') => (b',', &b[1..]),
+            // An empty section (or `;` alone): both defaults.
+            None | Some(b';') => return Ok((b',', b';')),
+            Some(_) => {
+                return Err(iges_err(
+                    "the global section does not start with a delimiter",
+                ));
+            }
+        },
+    };
+    let record = hollerith(rest).unwrap_or(b';');
+    if param == record
+        || param.is_ascii_alphanumeric()
+        || record.is_ascii_alphanumeric()
+        || param == b' '
+        || record == b' '
+    {
+        return Err(iges_err("unusable delimiters in the global section"));
+    }
+    Ok((param, record))
+}
+
+/// The parameters of one parameter-section record, up to its record delimiter: split at the
+/// parameter delimiter outside Hollerith strings (`nH` followed by n characters, which may hold
+/// either delimiter), each trimmed. Anything after the record delimiter is a comment.
+fn record_tokens(data: &[u8], param: u8, record: u8) -> Result<Vec<&str>, PdeError> {
+    let mut tokens = Vec::new();
+    let (mut i, mut start) = (0, 0);
+    while i < data.len() {
+        let c = data[i];
+        if c == param || c == record {
+            tokens.push(core::str::from_utf8(&data[start..i]).unwrap_or("").trim());
+            if c == record {
+                return Ok(tokens);
+            }
+            i += 1;
+            start = i;
+        } else if c.is_ascii_digit() && data[start..i].iter().all(u8::is_ascii_whitespace) {
+            // A number or the count of a Hollerith string.
+            let mut j = i;
+            while j < data.len() && data[j].is_ascii_digit() {
+                j += 1;
+            }
+            if matches!(data.get(j), Some(b'H' | b'h')) {
+                let n: usize = core::str::from_utf8(&data[i..j])
+                    .ok()
+                    .and_then(|t| t.parse().ok())
+                    .filter(|&n| n < data.len() - j)
+                    .ok_or_else(|| iges_err("a Hollerith string runs past its record"))?;
+                i = j + 1 + n;
+            } else {
+                i = j;
+            }
+        } else {
+            i += 1;
+        }
+    }
+    Err(iges_err("a parameter record has no record delimiter"))
+}
+
 /// Reads every entity 128 (rational B-spline surface with unit weights) of an IGES file, in
 /// the order of the parameter section.
 ///
-/// Fixed 80-column records (LF or CRLF); the parameter section's records are split at the
-/// record delimiter and read for every entity type 128, whatever other entities the file holds
-/// (as written by this crate or by other CAD systems, with `D` or `E` exponents). Counts read
-/// from the file are checked against the parameters present before anything is allocated; the
-/// reader never panics and allocates in proportion to the file.
+/// Fixed 80-column records (LF or CRLF). The delimiters are taken from the global section; the
+/// parameter section's lines are grouped by their directory-entry pointer (columns 65–72), the
+/// first 64 columns of each group joined and split into parameters outside Hollerith strings,
+/// and every record of entity type 128 is read, whatever other entities the file holds (as
+/// written by this crate or by Open CASCADE, with `D` or `E` exponents). Counts read from the
+/// file are checked against the parameters present before anything is allocated; the reader
+/// never panics and allocates in proportion to the file.
 ///
 /// # Errors
-/// [`PdeError::Iges`] for malformed lines, no entity 128, non-unit weights or counts that do
-/// not match the data; the errors of [`BSplineSurface::validate`].
+/// [`PdeError::Iges`] for malformed lines or delimiters, no entity 128, non-unit weights or
+/// counts that do not match the data; the errors of [`BSplineSurface::validate`].
 pub fn read_iges(text: &str) -> Result<Vec<BSplineSurface>, PdeError> {
-    let mut data = String::new();
+    let mut global = String::new();
+    // (directory-entry pointer, joined parameter text) of each entity, in file order.
+    let mut records: Vec<(&str, String)> = Vec::new();
     let mut saw_terminate = false;
     for (n, line) in text.lines().enumerate() {
         let bytes = line.as_bytes();
@@ -209,12 +293,15 @@ pub fn read_iges(text: &str) -> Result<Vec<BSplineSurface>, PdeError> {
         }
         match bytes[72] {
             b'P' => {
-                data.push_str(&line[..64]);
-                // A record of the parameter section ends inside a line; keep lines apart.
-                data.push(' ');
+                let pointer = line[64..72].trim();
+                match records.last_mut() {
+                    Some((p, data)) if *p == pointer => data.push_str(&line[..64]),
+                    _ => records.push((pointer, line[..64].to_string())),
+                }
             }
+            b'G' => global.push_str(&line[..72]),
             b'T' => saw_terminate = true,
-            b'S' | b'G' | b'D' => {}
+            b'S' | b'D' => {}
             other => {
                 return Err(iges_err(format!(
                     "line {}: unknown section '{}'",
@@ -227,12 +314,14 @@ pub fn read_iges(text: &str) -> Result<Vec<BSplineSurface>, PdeError> {
     if !saw_terminate {
         return Err(iges_err("no terminate section"));
     }
-    let surfaces: Vec<BSplineSurface> = data
-        .split(';')
-        .map(|record| record.split(',').map(str::trim).collect::<Vec<_>>())
-        .filter(|tokens| tokens.first() == Some(&"128"))
-        .map(|tokens| surface_of(&tokens))
-        .collect::<Result<_, _>>()?;
+    let (param, record) = delimiters(&global)?;
+    let mut surfaces = Vec::new();
+    for (_, data) in &records {
+        let tokens = record_tokens(data.as_bytes(), param, record)?;
+        if tokens.first() == Some(&"128") {
+            surfaces.push(surface_of(&tokens)?);
+        }
+    }
     if surfaces.is_empty() {
         return Err(iges_err("no entity 128"));
     }

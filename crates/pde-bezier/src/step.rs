@@ -348,7 +348,8 @@ impl Parser<'_> {
 }
 
 /// The data section's simple entity instances by id (complex instances `#n=(A(…)B(…))` are
-/// checked for syntax and kept by name "(complex)").
+/// checked for syntax and kept by name "(complex)", except rational B-spline surfaces, see
+/// [`rational_surface`]).
 type Entities = BTreeMap<usize, (String, Vec<Param>)>;
 
 fn data_entities(text: &str) -> Result<Entities, PdeError> {
@@ -378,23 +379,39 @@ fn data_entities(text: &str) -> Result<Entities, PdeError> {
             .ok_or_else(|| step_err(format!("bad entity id {id:.30}")))?;
         let body = body.trim();
         let entry = if body.starts_with('(') {
-            // A complex instance: a list of typed sub-instances separated by spaces; checked
-            // by reading each sub-instance's parameters.
+            // A complex instance: typed sub-instances separated by spaces. A rational B-spline
+            // surface is kept (as the simple form plus its weights, see `rational_surface`);
+            // any other is checked for syntax only.
             let mut p = Parser {
                 s: &body.as_bytes()[1..],
                 pos: 0,
             };
+            let mut parts: Vec<(String, Vec<Param>)> = Vec::new();
             loop {
                 p.skip_ws();
                 match p.s.get(p.pos) {
                     Some(b')') => break,
                     Some(c) if c.is_ascii_alphabetic() => {
-                        p.param(1)?;
+                        let start = p.pos;
+                        while p.pos < p.s.len()
+                            && (p.s[p.pos].is_ascii_alphanumeric() || p.s[p.pos] == b'_')
+                        {
+                            p.pos += 1;
+                        }
+                        let name = String::from_utf8_lossy(&p.s[start..p.pos]).into_owned();
+                        p.skip_ws();
+                        if p.s.get(p.pos) != Some(&b'(') {
+                            return Err(step_err(format!("#{id}: bad complex instance")));
+                        }
+                        let Param::List(params) = p.param(1)? else {
+                            return Err(step_err(format!("#{id}: bad complex instance")));
+                        };
+                        parts.push((name, params));
                     }
                     _ => return Err(step_err(format!("#{id}: bad complex instance"))),
                 }
             }
-            ("(complex)".to_string(), Vec::new())
+            rational_surface(&parts).unwrap_or_else(|| ("(complex)".to_string(), Vec::new()))
         } else {
             let open = body
                 .find('(')
@@ -426,8 +443,27 @@ fn data_entities(text: &str) -> Result<Entities, PdeError> {
     Ok(entities)
 }
 
+/// A complex instance holding `B_SPLINE_SURFACE`, `B_SPLINE_SURFACE_WITH_KNOTS` and
+/// `RATIONAL_B_SPLINE_SURFACE` as the 13 parameters of the simple `B_SPLINE_SURFACE_WITH_KNOTS`
+/// (name first) followed by the weights, under the name `RATIONAL_B_SPLINE_SURFACE`.
+fn rational_surface(parts: &[(String, Vec<Param>)]) -> Option<(String, Vec<Param>)> {
+    let find = |name: &str| parts.iter().find(|(n, _)| n == name).map(|(_, p)| p);
+    let (surface, knots, weights) = (
+        find("B_SPLINE_SURFACE")?,
+        find("B_SPLINE_SURFACE_WITH_KNOTS")?,
+        find("RATIONAL_B_SPLINE_SURFACE")?,
+    );
+    let mut params = vec![Param::Text(String::new())];
+    params.extend(surface.iter().cloned());
+    params.extend(knots.iter().cloned());
+    params.extend(weights.iter().cloned());
+    Some(("RATIONAL_B_SPLINE_SURFACE".to_string(), params))
+}
+
 /// Reads every `B_SPLINE_SURFACE_WITH_KNOTS` of a STEP (ISO 10303-21) file, in entity-id order
-/// (non-rational, explicit knots; other entities are checked for syntax only).
+/// (explicit knots; other entities are checked for syntax only). A rational surface (the
+/// complex instance with `RATIONAL_B_SPLINE_SURFACE`) whose weights are all exactly 1 is read as
+/// the polynomial surface it equals; other weights are refused.
 ///
 /// The reader takes any well-formed Part 21 text: LF or CRLF line ends, whitespace anywhere
 /// between tokens, comments, strings with `''` escapes, typed parameters, `$` and `*`, complex
@@ -436,19 +472,66 @@ fn data_entities(text: &str) -> Result<Entities, PdeError> {
 /// actually present before anything is reserved.
 ///
 /// # Errors
-/// [`PdeError::Step`] for a syntax error, a missing section or reference, no surface, or a
-/// malformed surface (with its entity id); the errors of [`BSplineSurface::validate`].
+/// [`PdeError::Step`] for a syntax error, a missing section or reference, no surface, a
+/// rational surface with weights other than 1, or a malformed surface (with its entity id);
+/// the errors of [`BSplineSurface::validate`].
 pub fn read_step(text: &str) -> Result<Vec<BSplineSurface>, PdeError> {
     let entities = data_entities(text)?;
     let surfaces: Vec<BSplineSurface> = entities
         .iter()
-        .filter(|(_, (name, _))| name == "B_SPLINE_SURFACE_WITH_KNOTS")
-        .map(|(&id, (_, params))| surface_of(&entities, id, params))
+        .filter_map(|(&id, (name, params))| match name.as_str() {
+            "B_SPLINE_SURFACE_WITH_KNOTS" => Some(surface_of(&entities, id, params)),
+            "RATIONAL_B_SPLINE_SURFACE" => Some(
+                unit_weights(id, params)
+                    .and_then(|()| surface_of(&entities, id, params.get(..13).unwrap_or(&[]))),
+            ),
+            _ => None,
+        })
         .collect::<Result<_, _>>()?;
     if surfaces.is_empty() {
         return Err(step_err("no B_SPLINE_SURFACE_WITH_KNOTS"));
     }
     Ok(surfaces)
+}
+
+/// Accepts a rational surface whose weights (the 14th parameter, rows of reals shaped like the
+/// control grid) are all exactly 1: it is the polynomial surface with the same control points.
+/// Other weights, or a weight grid of another shape, are refused.
+fn unit_weights(id: usize, params: &[Param]) -> Result<(), PdeError> {
+    // The weight grid must have the shape of the control grid (the 4th parameter).
+    let shape = |p: Option<&Param>| match p {
+        Some(Param::List(rows)) => Some(
+            rows.iter()
+                .map(|r| match r {
+                    Param::List(items) => items.len(),
+                    _ => usize::MAX,
+                })
+                .collect::<Vec<_>>(),
+        ),
+        _ => None,
+    };
+    let unit = match params.get(13) {
+        Some(Param::List(rows))
+            if params.len() == 14 && shape(params.get(3)) == shape(params.get(13)) =>
+        {
+            rows.iter().all(|row| match row {
+                Param::List(w) => w.iter().all(|w| *w == Param::Num(1.0)),
+                _ => false,
+            })
+        }
+        _ => {
+            return Err(step_err(format!(
+                "#{id}: malformed RATIONAL_B_SPLINE_SURFACE"
+            )));
+        }
+    };
+    if unit {
+        Ok(())
+    } else {
+        Err(step_err(format!(
+            "#{id}: rational surfaces (weights other than 1) are not supported"
+        )))
+    }
 }
 
 fn surface_of(

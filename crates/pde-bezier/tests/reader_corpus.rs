@@ -165,3 +165,82 @@ fn iges_entity_128_is_found_after_other_entities() {
     let text = lines.join("\r\n");
     assert_eq!(read_iges(&text).unwrap(), [surface(0.0)]);
 }
+
+#[test]
+fn step_rational_surface_with_unit_weights_is_read_as_polynomial() {
+    let good = step_text(&surface(0.0));
+    let line = good
+        .lines()
+        .find(|l| l.contains("B_SPLINE_SURFACE_WITH_KNOTS"))
+        .unwrap();
+    let (head, rest) = line.split_once("=B_SPLINE_SURFACE_WITH_KNOTS('',").unwrap();
+    let (grid, knots) = rest.split_once(",.F.,.F.,.F.,").unwrap();
+    let knots = knots.strip_suffix(");").unwrap();
+    // The complex instance Open CASCADE writes for a rational surface (2 x 3 weights here).
+    let complex = |weights: &str| {
+        let entity = format!(
+            "{head}=( BOUNDED_SURFACE() B_SPLINE_SURFACE({grid},.F.,.F.,.F.)\r\n B_SPLINE_SURFACE_WITH_KNOTS({knots}) GEOMETRIC_REPRESENTATION_ITEM() RATIONAL_B_SPLINE_SURFACE({weights}) REPRESENTATION_ITEM('') SURFACE() );"
+        );
+        good.replace(line, &entity)
+    };
+    let unit = complex("((1.,1.),(1.,1.),(1.,1.))");
+    assert_eq!(read_step(&unit).unwrap(), [surface(0.0)]);
+    refused("a weight of 2", || {
+        read_step(&complex("((1.,1.),(2.,1.),(1.,1.))"))
+    });
+    refused("weights missing", || read_step(&complex("()")));
+}
+
+#[test]
+fn iges_hollerith_strings_and_declared_delimiters_are_honoured() {
+    let good = iges_text(&surface(0.0));
+    let first_p = good.lines().position(|l| l.as_bytes()[72] == b'P').unwrap();
+    // A record whose Hollerith string holds both delimiters, before the surface's.
+    let mut lines: Vec<String> = good.lines().map(str::to_string).collect();
+    let other = format!("{:<64}{:>8}{}{:>7}", "314,50.,50.,50.,6HA;B,C;;", 3, 'P', 0);
+    lines.insert(first_p, other);
+    assert_eq!(read_iges(&lines.join("\n")).unwrap(), [surface(0.0)]);
+    // The same file with '/' and '#' declared as the delimiters in the global section.
+    let swapped: Vec<String> = good
+        .lines()
+        .map(|l| {
+            let (body, tail) = l.split_at(72);
+            let body = match tail.as_bytes()[0] {
+                b'G' if body.starts_with("1H,,1H;,") => {
+                    format!("1H//1H#/{}", body[8..].replace(',', "/").replace(';', "#"))
+                }
+                b'G' => body.replace(',', "/").replace(';', "#"),
+                b'P' => format!(
+                    "{}{}",
+                    body[..64].replace(',', "/").replace(';', "#"),
+                    &body[64..]
+                ),
+                _ => body.to_string(),
+            };
+            format!("{body}{tail}")
+        })
+        .collect();
+    assert_eq!(read_iges(&swapped.join("\n")).unwrap(), [surface(0.0)]);
+    // The default delimiters swapped in the records but not declared: refused, not misread.
+    let undeclared: Vec<String> = swapped
+        .iter()
+        .map(|l| {
+            if l.as_bytes()[72] == b'G' && l.starts_with("1H//1H#/") {
+                format!("1H,,1H;,{}", &l[8..])
+            } else {
+                l.clone()
+            }
+        })
+        .collect();
+    refused("undeclared delimiters", || {
+        read_iges(&undeclared.join("\n"))
+    });
+    refused("a Hollerith string past its record", || {
+        let mut lines: Vec<String> = good.lines().map(str::to_string).collect();
+        lines.insert(
+            first_p,
+            format!("{:<64}{:>8}{}{:>7}", "314,50.,50.,50.,99HAB;", 3, 'P', 0),
+        );
+        read_iges(&lines.join("\n"))
+    });
+}

@@ -374,6 +374,46 @@ pub fn crate_sources(manifest_dir: &str) -> Vec<(String, String)> {
     out
 }
 
+/// The two completeness tests of a crate's standing adversarial suite (`tests/no_panic.rs`):
+/// `every_public_item_is_in_this_suite` (each name `src/lib.rs` re-exports is named by the suite,
+/// [`missing_from_suite`]) and `every_public_function_is_called_in_this_suite` (each public
+/// function and method of `src/` is called by it, [`uncalled_in_crate_suite`]). Invoke it once at
+/// the end of the suite; the suite file must be `tests/no_panic.rs` of the crate under test.
+///
+/// ```ignore
+/// // at the end of tests/no_panic.rs
+/// bez_core::suite_completeness_tests!();
+/// ```
+#[macro_export]
+macro_rules! suite_completeness_tests {
+    () => {
+        /// Every item the crate re-exports is exercised by this suite (a new public item fails
+        /// here until it joins the suite).
+        #[test]
+        fn every_public_item_is_in_this_suite() {
+            let missing = $crate::proptest_support::missing_from_suite(
+                include_str!(concat!(env!("CARGO_MANIFEST_DIR"), "/src/lib.rs")),
+                include_str!(concat!(env!("CARGO_MANIFEST_DIR"), "/tests/no_panic.rs")),
+            );
+            assert!(missing.is_empty(), "not covered by this suite: {missing:?}");
+        }
+
+        /// Every public function and method of the crate is called by this suite (a new one
+        /// fails here until it joins the suite).
+        #[test]
+        fn every_public_function_is_called_in_this_suite() {
+            let uncalled = $crate::proptest_support::uncalled_in_crate_suite(
+                env!("CARGO_MANIFEST_DIR"),
+                include_str!(concat!(env!("CARGO_MANIFEST_DIR"), "/tests/no_panic.rs")),
+            );
+            assert!(
+                uncalled.is_empty(),
+                "not called by this suite: {uncalled:?}"
+            );
+        }
+    };
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;

@@ -40,7 +40,9 @@ pub(crate) fn tables() -> Result<Vec<Table>, DynError> {
         let functions = uncalled_in_crate_suite(&dir, "").len();
         let missing =
             missing_from_suite(&lib, &suite).len() + uncalled_in_crate_suite(&dir, &suite).len();
-        let tests = suite.matches("#[test]").count();
+        // `suite_completeness_tests!` expands to two tests.
+        let tests = suite.matches("#[test]").count()
+            + 2 * suite.matches("suite_completeness_tests!").count();
         let cases = proptest_cases(&suite);
         markdown.push_str(&format!(
             "| {name} | {items} | {functions} | {missing} | {tests} | {cases} |\n"

@@ -85,31 +85,70 @@ pub(crate) fn refit<const D: usize>(
             let offsets = (0..=b - a)
                 .step_by(stride)
                 .chain(((b - a) % stride != 0).then_some(b - a));
+            // The segment's Gram matrix G = Σ B(t) B(t)ᵀ of the B-spline basis and the moments
+            // Σ B(t) vᵀ, then mapped once onto the vertices its four control points are made of.
+            let mut gram = [[0.0; 4]; 4];
+            let mut moment = [[0.0; D]; 4];
             for off in offsets {
                 // Newton's start: the index fraction (the data are about evenly spaced along
                 // a segment, and the foot point does not depend on the start).
                 let v = data[(a + off) % n];
                 let (t, _) = cubic.foot(&v, off as f64 / (b - a) as f64);
-                let mut rhs = v;
-                let mut coeffs = [(0, 0.0); 6];
-                let mut m = 0;
-                for (idx, w) in segment_weights(sharp, s, bspline_basis(t)) {
-                    match column[idx] {
-                        Some(col) => {
-                            coeffs[m] = (col, w);
-                            m += 1;
-                        }
-                        None => rhs -= curve.points()[idx] * w,
+                let w = bspline_basis(t);
+                let v = <[f64; D]>::from(v);
+                for r in 0..4 {
+                    for c in 0..4 {
+                        gram[r][c] += w[r] * w[c];
+                    }
+                    for d in 0..D {
+                        moment[r][d] += w[r] * v[d];
                     }
                 }
-                for &(c1, w1) in &coeffs[..m] {
-                    for &(c2, w2) in &coeffs[..m] {
-                        if c1 >= c2 && !ata.add_lower(c1, c2, w1 * w2) {
-                            return None;
+            }
+            // Control point r = Σ coefficient · vertex (phantom points at sharp ends): its free
+            // part by column, its fixed part as a point.
+            let mut parts = [[(0, 0.0); 2]; 4];
+            let mut counts = [0; 4];
+            let mut fixed = [[0.0; D]; 4];
+            for r in 0..4 {
+                let mut unit = [0.0; 4];
+                unit[r] = 1.0;
+                for (idx, coef) in segment_weights(sharp, s, unit) {
+                    if coef == 0.0 {
+                        continue;
+                    }
+                    match column[idx] {
+                        Some(col) => {
+                            parts[r][counts[r]] = (col, coef);
+                            counts[r] += 1;
+                        }
+                        None => {
+                            let p = <[f64; D]>::from(curve.points()[idx]);
+                            for d in 0..D {
+                                fixed[r][d] += coef * p[d];
+                            }
                         }
                     }
-                    for (c, b) in atb[c1].iter_mut().enumerate() {
-                        *b += w1 * rhs[c];
+                }
+            }
+            for r in 0..4 {
+                // The right-hand side of control r: its moment less what the fixed parts give.
+                let mut rhs = moment[r];
+                for c in 0..4 {
+                    for d in 0..D {
+                        rhs[d] -= gram[r][c] * fixed[c][d];
+                    }
+                }
+                for &(c1, w1) in &parts[r][..counts[r]] {
+                    for d in 0..D {
+                        atb[c1][d] += w1 * rhs[d];
+                    }
+                    for c in 0..4 {
+                        for &(c2, w2) in &parts[c][..counts[c]] {
+                            if c1 >= c2 && !ata.add_lower(c1, c2, w1 * gram[r][c] * w2) {
+                                return None;
+                            }
+                        }
                     }
                 }
             }

@@ -102,11 +102,11 @@ pub enum Reduction {
     /// the span's segments within the tolerance; then [`Reduction::RemovePoints`], each trial
     /// refitting the four control points around the merged segment. Every trial costs the data of
     /// its span or window, not of the contour; the refit uses at most 16 data points per segment
-    /// and two foot-point iterations, the measurement all data. A span that needs more than two
+    /// and two foot-point iterations, the measurement all data. A span that needs more than six
     /// points beyond its initial count sends the contour through the insertion loop (in
-    /// [`FitOptions::mode`]) and then the same re-spacing and removal. Round 0 of the reports is
-    /// then the span fit. On the printable ASCII glyphs of DejaVu Sans at 10⁻³ em: 1,795 control
-    /// points (TrueType stores 1,797) in about 2.5 ms per glyph.
+    /// [`FitOptions::mode`]) and then the same re-spacing and removal. Otherwise round 0 of the
+    /// reports is the span fit. On the printable ASCII glyphs of DejaVu Sans at 10⁻³ em: 1,795
+    /// control points (TrueType stores 1,797) in about 2 ms per glyph.
     Refit,
 }
 

@@ -360,7 +360,7 @@ pub(crate) fn fit_spans<const D: usize>(
 
 /// Points beyond its initial count that [`fit_spans`] tries in a span before leaving the fit to
 /// the insertion loop.
-const EXTRA_POINTS: usize = 2;
+const EXTRA_POINTS: usize = 6;
 
 /// The curve of the fitting points `trial` with an upper bound of each segment error, or `None`
 /// when the system cannot be solved or a segment's error exceeds the tolerance. A segment between

@@ -59,6 +59,7 @@ pub(crate) struct Assessment {
 }
 
 /// The errors of one segment.
+#[derive(Clone)]
 pub(crate) struct SegmentErrors {
     pub(crate) d2c: f64,
     sum2: f64,
@@ -164,6 +165,16 @@ pub(crate) fn assess_segment<const D: usize>(
     }
 }
 
+/// One segment's errors with what they were measured on: its data range and its four control
+/// points. A segment of a later round with the same range and bit for bit the same control points
+/// has the same errors, so they are not measured again.
+#[derive(Clone)]
+pub(crate) struct Measured<const D: usize> {
+    range: (usize, usize),
+    ctrl: [Vector<D>; 4],
+    errors: SegmentErrors,
+}
+
 /// Errors of every segment of `curve`.
 pub(crate) fn assess<const D: usize>(
     data: &[Vector<D>],
@@ -172,19 +183,58 @@ pub(crate) fn assess<const D: usize>(
     closed: bool,
     options: &FitOptions,
 ) -> Assessment {
+    assess_reusing(data, fitting, curve, closed, options, &mut Vec::new())
+}
+
+/// [`assess`], taking the errors of every segment that `previous` (the segments of the last
+/// round, by their first data index) measured on the same data range with the same control points,
+/// and leaving this round's segments in `previous`.
+///
+/// Between two rounds only the spans with a new fitting point change: a sharp vertex's row of
+/// eq. (4) is `p_i = q_i`, so the solution on either side of it does not depend on the other
+/// side, and the untouched spans come out bit for bit the same. The values are exactly those of
+/// a full [`assess`].
+pub(crate) fn assess_reusing<const D: usize>(
+    data: &[Vector<D>],
+    fitting: &[(usize, bool)],
+    curve: &SubdivCurve<D>,
+    closed: bool,
+    options: &FitOptions,
+    previous: &mut Vec<Measured<D>>,
+) -> Assessment {
+    let n = data.len();
     let (mut max_d2c, mut sum2, mut count, mut max_c2d) = (0.0_f64, 0.0, 0usize, 0.0_f64);
     let segs = curve.segment_count();
     let mut verdicts = Vec::with_capacity(segs);
     let mut driven = Vec::with_capacity(segs);
+    let mut now = Vec::with_capacity(segs);
     for j in 0..segs {
-        let e = assess_segment(data, fitting, curve, closed, options, j, f64::INFINITY);
+        let range = segment_range(fitting, j, n);
+        let ctrl = curve.segment_controls(j).ok();
+        let reused = previous
+            .binary_search_by_key(&range.0, |m| m.range.0)
+            .ok()
+            .map(|o| &previous[o])
+            .filter(|m| m.range == range && Some(m.ctrl) == ctrl);
+        let e = match reused {
+            Some(m) => m.errors.clone(),
+            None => assess_segment(data, fitting, curve, closed, options, j, f64::INFINITY),
+        };
         max_d2c = max_d2c.max(e.d2c);
         max_c2d = max_c2d.max(e.c2d);
         sum2 += e.sum2;
         count += e.count;
         driven.push(e.driven(options.measure));
         verdicts.push(e.verdict);
+        if let Some(ctrl) = ctrl {
+            now.push(Measured {
+                range,
+                ctrl,
+                errors: e,
+            });
+        }
     }
+    *previous = now;
     Assessment {
         max_d2c,
         rms_d2c: if count > 0 {

@@ -78,6 +78,7 @@ mod insertion;
 #[cfg(feature = "kurbo")]
 mod path;
 mod reduction;
+mod refit;
 mod seeding;
 mod segment;
 mod svg;

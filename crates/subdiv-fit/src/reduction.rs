@@ -18,13 +18,18 @@ use bez_core::Vector;
 use crate::SubdivCurve;
 use crate::assess::assess_segment;
 use crate::chord::ChordLengths;
-use crate::fit::{FitOptions, solve_curve};
+use crate::fit::{FitMode, FitOptions, Reduction, solve_curve};
+use crate::refit::refit;
 
 /// Segments on either side of a removed point that are measured again.
 const WINDOW: usize = 3;
 
 /// Polygons with more control points are not reduced (a pass is O(k²)).
 pub const MAX_REDUCED: usize = 4096;
+
+/// Control points on either side of the merged segment that a removal trial of
+/// [`Reduction::Refit`] refits (the others are fixed).
+const REFIT_REACH: usize = 2;
 
 /// Passes over the fitting points.
 const PASSES: usize = 2;
@@ -98,8 +103,34 @@ fn try_removal<const D: usize>(
     let k = fitting.len();
     let mut trial = fitting.to_vec();
     trial.remove(j);
-    let next = solve_curve(data, &trial, closed, options.mode).ok()?;
     let k2 = trial.len();
+    let next = if options.reduction == Reduction::Refit {
+        // The points around the merged segment, from the interpolating solution, refitted by
+        // least squares with every other point where it was.
+        let interp = solve_curve(data, &trial, closed, FitMode::Interpolate).ok()?;
+        let mut points: Vec<Vector<D>> = curve.points().to_vec();
+        points.remove(j);
+        let mut free = Vec::new();
+        for o in 0..2 * REFIT_REACH {
+            // Trial vertices j − REACH ..= j + REACH − 1 (the merged segment is j − 1 → j).
+            let t = (j + k2 + o).checked_sub(REFIT_REACH)?;
+            let t = if closed {
+                t % k2
+            } else if t >= k2 && t - k2 < k2 {
+                t - k2
+            } else {
+                continue;
+            };
+            if !interp.sharp()[t] && !free.contains(&t) {
+                points[t] = interp.points()[t];
+                free.push(t);
+            }
+        }
+        let guess = SubdivCurve::new(points, interp.sharp().to_vec(), curve.closure()).ok()?;
+        refit(data, &trial, guess, &free)?
+    } else {
+        solve_curve(data, &trial, closed, options.mode).ok()?
+    };
     // Old vertex of trial vertex t.
     let old = |t: usize| if t < j { t } else { t + 1 };
     let disp: Vec<f64> = (0..k2)
@@ -191,49 +222,24 @@ pub(crate) fn respace_spans<const D: usize>(
     if fitting.len() > MAX_REDUCED {
         return 0;
     }
-    // Data indices of the span ends: the sharp vertices, which re-spacing keeps.
-    let mut ends: Vec<usize> = (0..fitting.len())
-        .filter(|&j| curve.sharp()[j])
-        .map(|j| fitting[j].0)
-        .collect();
-    if closed {
-        match ends.first() {
-            Some(&first) => ends.push(first + n),
-            None => ends = vec![fitting[0].0, fitting[0].0 + n],
-        }
-    }
     let mut removed = 0;
-    for w in ends.windows(2) {
-        let (a, b) = (w[0], w[1]);
-        // Regular points strictly inside the span (unwrapped data indices).
-        let inside = |i: usize| {
-            let u = if i < a { i + n } else { i };
-            u > a && u < b
-        };
+    // The span ends are the sharp vertices, which re-spacing keeps.
+    let sharp: Vec<(usize, bool)> = fitting
+        .iter()
+        .zip(curve.sharp())
+        .map(|(f, &s)| (f.0, s))
+        .collect();
+    for span in spans(&sharp, n, closed) {
+        let inside = |i: usize| strictly_inside(i, span, n);
         let r = fitting.iter().filter(|f| inside(f.0)).count();
-        let (start, length) = (chords.at(a), chords.at(b) - chords.at(a));
         let spacings = (0..r).flat_map(|fewer| [(fewer, Spacing::Even), (fewer, Spacing::Graded)]);
         for (fewer, spacing) in spacings {
-            let mut trial: Vec<(usize, bool)> =
-                fitting.iter().copied().filter(|f| !inside(f.0)).collect();
-            let mut last = a;
-            for m in 1..=fewer {
-                let target = start + length * spacing.fraction(m, fewer + 1);
-                // `nearest_interior` wraps its result; compare unwrapped.
-                if let Some(i) = chords.nearest_interior(a, b, target) {
-                    let u = if i < a { i + n } else { i };
-                    if u > last {
-                        trial.push((i, false));
-                        last = u;
-                    }
-                }
-            }
-            trial.sort_unstable_by_key(|f| f.0);
+            let trial = span_trial(fitting, chords, span, fewer, spacing, inside);
             // As few points as the removal leaves, at least (a closed polygon needs 3).
             if trial.len() < if closed { 3 } else { 2 } {
                 continue;
             }
-            if let Some((c, e)) = try_trial(data, &trial, fitting, curve, errors, closed, options) {
+            if let Some((c, e)) = try_trial(data, &trial, fitting, curve, errors, options, inside) {
                 removed += fitting.len() - trial.len();
                 *fitting = trial;
                 *curve = c;
@@ -244,6 +250,117 @@ pub(crate) fn respace_spans<const D: usize>(
     }
     removed
 }
+
+/// `fitting` with the points `inside` span `span` (unwrapped data indices of its ends) replaced by
+/// `count` regular points at the chord-length fractions of `spacing`.
+fn span_trial(
+    fitting: &[(usize, bool)],
+    chords: &ChordLengths,
+    span: (usize, usize),
+    count: usize,
+    spacing: Spacing,
+    inside: impl Fn(usize) -> bool,
+) -> Vec<(usize, bool)> {
+    let (a, b) = span;
+    let n = chords.len();
+    let (start, length) = (chords.at(a), chords.at(b) - chords.at(a));
+    let mut trial: Vec<(usize, bool)> = fitting.iter().copied().filter(|f| !inside(f.0)).collect();
+    let mut last = a;
+    for m in 1..=count {
+        let target = start + length * spacing.fraction(m, count + 1);
+        // `nearest_interior` wraps its result; compare unwrapped.
+        if let Some(i) = chords.nearest_interior(a, b, target) {
+            let u = if i < a { i + n } else { i };
+            if u > last {
+                trial.push((i, false));
+                last = u;
+            }
+        }
+    }
+    trial.sort_unstable_by_key(|f| f.0);
+    trial
+}
+
+/// The spans between consecutive sharp fitting points as unwrapped data indices of their ends
+/// (a closed polygon without one is one span from its first fitting point round to it).
+fn spans(fitting: &[(usize, bool)], n: usize, closed: bool) -> Vec<(usize, usize)> {
+    let mut ends: Vec<usize> = fitting.iter().filter(|f| f.1).map(|f| f.0).collect();
+    if closed {
+        match ends.first() {
+            Some(&first) => ends.push(first + n),
+            None => ends = vec![fitting[0].0, fitting[0].0 + n],
+        }
+    }
+    ends.windows(2).map(|w| (w[0], w[1])).collect()
+}
+
+/// Whether data index `i` lies strictly inside the span `(a, b)` (unwrapped, `b` may exceed `n`).
+fn strictly_inside(i: usize, (a, b): (usize, usize), n: usize) -> bool {
+    let u = if i < a { i + n } else { i };
+    u > a && u < b
+}
+
+/// Fits every span between two consecutive sharp points of the initial fitting points `seed`
+/// directly by least squares ([`Reduction::Refit`] in place of the insertion loop): for each span
+/// the fewest regular points, counting up from none to [`EXTRA_POINTS`] more than the span's
+/// initial count, evenly spaced or else graded, whose refitted segments are all within the
+/// tolerance. The spans are independent (a sharp vertex's phantom point decouples the
+/// two sides), so each trial refits and measures only its span. `None` when a span needs more
+/// points than that; the insertion loop takes over then.
+pub(crate) fn fit_spans<const D: usize>(
+    data: &[Vector<D>],
+    chords: &ChordLengths,
+    seed: &[(usize, bool)],
+    closed: bool,
+    options: &FitOptions,
+) -> Option<(Vec<(usize, bool)>, SubdivCurve<D>)> {
+    let n = data.len();
+    let tol = options.tolerance;
+    let mut fitting = seed.to_vec();
+    if !closed {
+        let last = fitting.len() - 1;
+        fitting[0].1 = true;
+        fitting[last].1 = true;
+    }
+    let mut curve = solve_curve(data, &fitting, closed, FitMode::Interpolate).ok()?;
+    for span in spans(&fitting, n, closed) {
+        let inside = |i: usize| strictly_inside(i, span, n);
+        let seeded = fitting.iter().filter(|f| inside(f.0)).count();
+        let mut accepted = None;
+        for count in 0..=seeded + EXTRA_POINTS {
+            accepted = [Spacing::Even, Spacing::Graded]
+                .into_iter()
+                .find_map(|spacing| {
+                    let trial = span_trial(&fitting, chords, span, count, spacing, inside);
+                    if trial.len() < if closed { 3 } else { 2 } {
+                        return None;
+                    }
+                    let next = respaced_refit(data, &trial, &fitting, &curve, closed, inside)?;
+                    let segs = next.segment_count();
+                    let span_segments = (0..segs).filter(|&s| {
+                        let start = trial[s].0;
+                        start == span.0 % n || inside(start)
+                    });
+                    for s in span_segments {
+                        let e = assess_segment(data, &trial, &next, closed, options, s, tol);
+                        if e.driven(options.measure) > tol {
+                            return None;
+                        }
+                    }
+                    Some((trial, next))
+                });
+            if accepted.is_some() {
+                break;
+            }
+        }
+        (fitting, curve) = accepted?;
+    }
+    Some((fitting, curve))
+}
+
+/// Points beyond its initial count that [`fit_spans`] tries in a span before leaving the fit to
+/// the insertion loop.
+const EXTRA_POINTS: usize = 6;
 
 /// The curve of the fitting points `trial` with an upper bound of each segment error, or `None`
 /// when the system cannot be solved or a segment's error exceeds the tolerance. A segment between
@@ -256,11 +373,16 @@ fn try_trial<const D: usize>(
     fitting: &[(usize, bool)],
     curve: &SubdivCurve<D>,
     errors: &[f64],
-    closed: bool,
     options: &FitOptions,
+    inside: impl Fn(usize) -> bool,
 ) -> Option<(SubdivCurve<D>, Vec<f64>)> {
     let tol = options.tolerance;
-    let next = solve_curve(data, trial, closed, options.mode).ok()?;
+    let closed = curve.is_closed();
+    let next = if options.reduction == Reduction::Refit {
+        respaced_refit(data, trial, fitting, curve, closed, inside)?
+    } else {
+        solve_curve(data, trial, closed, options.mode).ok()?
+    };
     let (k, k2) = (fitting.len(), trial.len());
     let segs = next.segment_count();
     let mut out = vec![f64::NAN; segs];
@@ -297,6 +419,36 @@ fn try_trial<const D: usize>(
         }
     }
     Some((next, out))
+}
+
+/// The curve of the fitting points `trial` for [`Reduction::Refit`]: the regular control points
+/// of the data indices `inside` the re-spaced span, from the interpolating solution, refitted by
+/// least squares; the others stay where `curve` (of `fitting`) has them.
+fn respaced_refit<const D: usize>(
+    data: &[Vector<D>],
+    trial: &[(usize, bool)],
+    fitting: &[(usize, bool)],
+    curve: &SubdivCurve<D>,
+    closed: bool,
+    inside: impl Fn(usize) -> bool,
+) -> Option<SubdivCurve<D>> {
+    let interp = solve_curve(data, trial, closed, FitMode::Interpolate).ok()?;
+    let mut points = interp.points().to_vec();
+    let mut free = Vec::new();
+    for (t, f) in trial.iter().enumerate() {
+        if inside(f.0) && !interp.sharp()[t] {
+            free.push(t);
+        } else if let Ok(o) = fitting.binary_search_by_key(&f.0, |g| g.0) {
+            points[t] = curve.points()[o];
+        }
+    }
+    // In polygon order (a span may wrap round the first point of a closed polygon), so that the
+    // columns of the band follow the polygon.
+    if let Some(cut) = (1..free.len()).find(|&i| free[i] != free[i - 1] + 1) {
+        free.rotate_left(cut);
+    }
+    let guess = SubdivCurve::new(points, interp.sharp().to_vec(), curve.closure()).ok()?;
+    refit(data, trial, guess, &free)
 }
 
 #[cfg(test)]

@@ -131,7 +131,8 @@ fn options() -> impl Strategy<Value = FitOptions> {
                         Insertion::MaxError
                     })
                     .with_reduction(match (flags.4, flags.0) {
-                        (true, true) => Reduction::RespaceAndRemove,
+                        (true, true) if flags.3 => Reduction::RespaceAndRemove,
+                        (true, true) => Reduction::Refit,
                         (true, false) => Reduction::RemovePoints,
                         (false, _) => Reduction::Off,
                     })

@@ -171,7 +171,9 @@ fn control_counts_do_not_grow_with_the_sampling_density() {
 /// Point removal after convergence, with and without re-spacing the spans first, keeps both error
 /// measures within the tolerance (checked independently: every data point against dense samples
 /// of the curve, and the samples against the data polyline) and, in least-squares mode and with
-/// re-spacing, removes points; re-spacing never leaves more than removal alone; corners stay.
+/// re-spacing, removes points; re-spacing never leaves more than removal alone; corners stay. The
+/// same holds for the least-squares refit of the spans (`Reduction::Refit`), which leaves about as
+/// few points as re-spacing.
 #[test]
 fn point_removal_keeps_the_tolerance() {
     let (data, corners) = outline(4000);
@@ -188,7 +190,14 @@ fn point_removal_keeps_the_tolerance() {
         .unwrap();
         assert!(respaced.curve.points().len() < removed.curve.points().len());
         assert!(respaced.reduced.is_some());
-        for f in [removed, respaced] {
+        let refit = fit(
+            &data,
+            Closure::Closed,
+            &opts.with_reduction(Reduction::Refit),
+        )
+        .unwrap();
+        assert!(refit.curve.points().len() <= respaced.curve.points().len() + 2);
+        for f in [removed, respaced, refit] {
             let k = f.curve.points().len();
             assert!(k <= plain.curve.points().len());
             if mode == FitMode::LeastSquares {
@@ -246,27 +255,25 @@ fn kept_corners_keep_their_angle() {
     }
 }
 
-/// Re-spacing a closed curve without corners (one span round the whole curve) keeps at least
-/// three control points and the tolerance, and does not leave more points than removal alone.
+/// Re-spacing a closed curve without corners (one span round the whole curve), also with
+/// least-squares refits, keeps at least three control points and the tolerance, and does not
+/// leave more points than removal alone.
 #[test]
 fn respacing_a_circle_keeps_a_closed_polygon() {
     let data = noisy_circle(400, 0.0, 1);
     for tol in [1e-3, 0.05, 0.5] {
         let opts = FitOptions::new(tol);
         let removed = fit(&data, Closure::Closed, &opts).unwrap();
-        let respaced = fit(
-            &data,
-            Closure::Closed,
-            &opts.with_reduction(Reduction::RespaceAndRemove),
-        )
-        .unwrap();
-        let k = respaced.curve.points().len();
-        assert!(k >= 3 && k <= removed.curve.points().len(), "{tol}: {k}");
-        assert!(respaced.curve.sharp().iter().all(|&s| !s));
-        let r = respaced.last().unwrap();
-        assert!(
-            r.max_data_to_curve <= tol && r.max_curve_to_data <= tol,
-            "{r:?}"
-        );
+        for reduction in [Reduction::RespaceAndRemove, Reduction::Refit] {
+            let respaced = fit(&data, Closure::Closed, &opts.with_reduction(reduction)).unwrap();
+            let k = respaced.curve.points().len();
+            assert!(k >= 3 && k <= removed.curve.points().len(), "{tol}: {k}");
+            assert!(respaced.curve.sharp().iter().all(|&s| !s));
+            let r = respaced.last().unwrap();
+            assert!(
+                r.max_data_to_curve <= tol && r.max_curve_to_data <= tol,
+                "{r:?}"
+            );
+        }
     }
 }

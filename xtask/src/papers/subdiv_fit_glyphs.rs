@@ -112,8 +112,9 @@ fn kurbo_all(glyphs: &[Glyph], tol: f64) {
 }
 
 /// The subdiv-fit configurations of the table at `tol`: interpolation and least squares, each
-/// with the default point removal and with re-spacing first.
-fn configurations(tol: f64) -> [(&'static str, FitOptions); 4] {
+/// with the default point removal and with re-spacing first, and the least-squares refit of the
+/// spans (`Reduction::Refit`).
+fn configurations(tol: f64) -> [(&'static str, FitOptions); 5] {
     let interp = FitOptions::new(tol);
     let lsq = interp.with_mode(FitMode::LeastSquares);
     let respace = Reduction::RespaceAndRemove;
@@ -127,6 +128,10 @@ fn configurations(tol: f64) -> [(&'static str, FitOptions); 4] {
         (
             "subdiv-fit, least squares, re-spaced",
             lsq.with_reduction(respace),
+        ),
+        (
+            "subdiv-fit, least-squares refit of the spans",
+            interp.with_reduction(Reduction::Refit),
         ),
     ]
 }

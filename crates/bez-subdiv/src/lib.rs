@@ -12,7 +12,7 @@
 //! | method | guarantee | segments / N* (random cubics, tol = 1e-3 × size) | cost |
 //! |---|---|---|---|
 //! | [`Method::Fast`] (default) | Hausdorff ≤ tol | about 2 (Wang's count, lyon_geom's) | a few flops per point, no subdivision |
-//! | [`Method::Optimal`] | Hausdorff ≤ tol | median 1.05, 90th percentile 1.10 | about kurbo's `flatten` on cubics (1.15–1.17 × its time on random ones); O(n) per point above degree 3 |
+//! | [`Method::Optimal`] | Hausdorff ≤ tol | median 1.05, 90th percentile 1.10 | about kurbo's `flatten` on cubics (1.15–1.17 × its time on random ones); O(n) per point above degree 3 (medians 1.075–1.09 N* there) |
 //! | [`Method::LocalWang`] | Hausdorff ≤ tol | 1.6–2.0 | one halving per up to 16 points |
 //! | [`Method::Halving`] | Hausdorff ≤ tol | about 1.7 | one halving per segment |
 //! | [`Method::PaperRule`] | **none** (eq. (3) on degenerate input: 2,007 × tol) | — | reproduction of Table 1 |
@@ -58,6 +58,7 @@ mod bound;
 #[cfg(feature = "paper")]
 pub mod cases;
 mod chord;
+mod cubic_model;
 mod error;
 #[cfg_attr(
     not(feature = "paper"),
@@ -75,9 +76,11 @@ mod hausdorff;
 mod limits;
 mod local_wang;
 mod measure;
+mod model_march;
 mod near_optimal;
 mod optimal;
 mod split_rule;
+mod stack_horner;
 #[cfg(test)]
 mod test_support;
 mod wang;
@@ -106,6 +109,7 @@ pub use crate::split_rule::split_objective;
 pub use crate::split_rule::{
     ADAPTIVE_BAND, Branch, Choice, Levels, Objective, PAPER_LEVELS, Search, SplitRule,
 };
+pub use crate::stack_horner::MAX_STACK_DEGREE;
 pub use crate::wang::MAX_WANG_SEGMENTS;
 
 /// The README's example, compiled and run with the doctests.

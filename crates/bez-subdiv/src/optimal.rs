@@ -1,23 +1,19 @@
 //! Beyond the paper: near-optimal guaranteed flattening, placed by the curvature density
 //! √(|κ| / (8 tol)) and verified segment by segment with closed-form bounds.
 
-use bez_core::{BezierCurve, BezierForm, HornerBernstein, Vector2, hodograph_slice};
+use bez_core::{BezierCurve, BezierForm, Vector2};
 
 use crate::bound::wang_steps;
 use crate::error::SubdivError;
-use crate::fixed::halve_until;
 use crate::guaranteed::FlatPoint;
 
 /// The most segments one call places (2²⁰), checked before the first point is sent.
 pub(crate) const MAX_OPTIMAL_SEGMENTS: usize = 1 << 20;
 
-/// Density nodes per step of Wang's count (of the curve up to degree 3, of each piece above).
+/// Density nodes per step of Wang's count.
 const NODES_PER_WANG_STEP: f64 = 0.35;
 /// Most density cells of a curve of degree ≤ 3 (held in an array, no allocation).
 const MAX_CUBIC_CELLS: usize = 200;
-/// Above degree 3, the curve is halved until each piece needs at most this many of Wang's
-/// steps; the pieces' control polygons then bound the third and fourth derivatives.
-const PIECE_WANG_STEPS: f64 = 16.0;
 /// A step whose bound is below this fraction of the tolerance is tried once longer (0.9: the
 /// count on random cubics drops by about 1 %, for about 20 % more time than without).
 const EXTEND_BELOW: f64 = 0.9;
@@ -91,25 +87,6 @@ impl Evaluate for Power {
             (d1.perp(&d2).abs() / speed).sqrt()
         } else {
             0.0
-        }
-    }
-}
-
-/// Any degree: B, B′ and B″ by Horner's rule on their Bernstein forms, O(n) each.
-struct General {
-    point: HornerBernstein<Vector2>,
-    d1: HornerBernstein<Vector2>,
-    d2: HornerBernstein<Vector2>,
-}
-
-impl Evaluate for General {
-    fn jet(&self, t: f64) -> Jet {
-        let z = Vector2::zeros();
-        Jet {
-            t,
-            point: self.point.eval(t).unwrap_or(z),
-            d1: self.d1.eval(t).unwrap_or(z),
-            d2: self.d2.eval(t).unwrap_or(z),
         }
     }
 }
@@ -473,15 +450,16 @@ fn place<E: Evaluate, S: FnMut(FlatPoint)>(
 /// `chord_bound` (a closed form in B′ and B″ at the chord's ends plus bounds on B‴ and B⁗); a
 /// chord whose bound exceeds the tolerance is shortened until it holds, one whose bound is
 /// below 0.9 tol is tried once longer. Up to degree 3, B‴ is constant and B⁗ = 0, so nothing is
-/// subdivided: O(1) per point, no allocation. Above, the curve is first halved (de Casteljau)
-/// until each piece needs at most 16 of Wang's steps, and the pieces' control polygons bound
-/// B‴ and B⁗; points cost O(n) each.
+/// subdivided: O(1) per point, no allocation. Above, the curve is covered piece by piece by
+/// cubic models with rigorous remainders and each chord is verified exactly on the models
+/// ([`model_march`](crate::model_march)): O(n) per point (one evaluation of B), O(n²) per
+/// block of about 16 models, no allocation up to degree [`MAX_STACK_DEGREE`](crate::MAX_STACK_DEGREE).
 ///
 /// # Errors
 /// [`SubdivError::TooFewPoints`], [`SubdivError::InvalidTolerance`],
 /// [`SubdivError::DepthTooLarge`], [`SubdivError::ToleranceBelowRounding`] (checked before any
-/// work), [`SubdivError::TooManySegments`] above 2²⁰ segments (the estimate is checked before
-/// the first point), [`SubdivError::DepthLimit`] when an arc shorter than 2^−`max_depth` fails
+/// work), [`SubdivError::TooManySegments`] above 2²⁰ segments (up to degree 3 the estimate is
+/// checked before the first point; above, Wang's count ≤ 2²⁰ is checked first), [`SubdivError::DepthLimit`] when an arc shorter than 2^−`max_depth` fails
 /// its bound.
 pub(crate) fn flatten_optimal<C: BezierForm<2> + ?Sized>(
     curve: &C,
@@ -551,78 +529,7 @@ fn optimal_bezier(
         place(&mut march, &nodes[..=cells], &bound, first, last)?;
         return Ok(march.segments);
     }
-    let d1 = hodograph_slice(p);
-    let general = General {
-        point: HornerBernstein::new(p),
-        d2: HornerBernstein::new(&hodograph_slice(&d1)),
-        d1: HornerBernstein::new(&d1),
-    };
-    let (first, last) = ends(&|t| general.jet(t));
-    let n = (p.len() - 1) as f64;
-    let (mut nodes, mut pieces) = (vec![(0.0, density(&first))], Vec::new());
-    let mut t0 = 0.0_f64;
-    halve_until(
-        p,
-        max_depth,
-        |piece| wang_steps(piece, tolerance) <= PIECE_WANG_STEPS,
-        |piece, level| {
-            let span = 0.5_f64.powi(i32::try_from(level).unwrap_or(i32::MAX));
-            let t1 = if t0 + span >= 1.0 { 1.0 } else { t0 + span };
-            let cells = (wang_steps(piece, tolerance) * NODES_PER_WANG_STEP)
-                .ceil()
-                .max(1.0) as usize;
-            for j in 1..=cells {
-                let t = if j == cells {
-                    t1
-                } else {
-                    t0 + span * (j as f64 / cells as f64)
-                };
-                nodes.push((t, density(&general.jet(t))));
-            }
-            let third =
-                n * (n - 1.0) * (n - 2.0) * max_difference::<3>(piece) / (span * span * span);
-            let fourth = n * (n - 1.0) * (n - 2.0) * (n - 3.0) * max_difference::<4>(piece)
-                / (span * span * span * span);
-            pieces.push(PieceBound {
-                end: t1,
-                third,
-                fourth,
-            });
-            t0 = t1;
-        },
-    )?;
-    let mut march = March {
-        eval: &general,
-        sink,
-        accept: tolerance - allowance,
-        min_step,
-        max_depth,
-        tolerance,
-        segments: 0,
-        last,
-        jerk: None,
-    };
-    place(&mut march, &nodes, &pieces, first, last)?;
-    Ok(march.segments)
-}
-
-/// maxᵢ |ΔᴷQᵢ|, the largest K-th forward difference of the control polygon `q` (0 when it has
-/// at most K points).
-fn max_difference<const K: usize>(q: &[Vector2]) -> f64 {
-    // Binomial coefficients with alternating signs: Δᴷqᵢ = Σⱼ (−1)ᴷ⁻ʲ C(K, j) qᵢ₊ⱼ.
-    let weights: &[f64] = match K {
-        3 => &[-1.0, 3.0, -3.0, 1.0],
-        4 => &[1.0, -4.0, 6.0, -4.0, 1.0],
-        _ => return 0.0,
-    };
-    q.windows(K + 1)
-        .map(|w| {
-            w.iter()
-                .zip(weights)
-                .fold(Vector2::zeros(), |acc, (&p, &c)| acc + p * c)
-                .norm()
-        })
-        .fold(0.0, f64::max)
+    crate::model_march::march_models(p, tolerance - allowance, max_depth, sink)
 }
 
 #[cfg(test)]

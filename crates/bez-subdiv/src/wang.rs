@@ -6,6 +6,7 @@ use bez_core::{BezierForm, HornerBernstein, Vector2};
 use crate::bound::wang_count;
 use crate::error::SubdivError;
 use crate::guaranteed::FlatPoint;
+use crate::stack_horner::{STACK_POINTS, StackHorner};
 
 /// The most segments one call of [`Method::Fast`](crate::Method::Fast) produces: 2²⁴. A tolerance that needs more
 /// (below the rounding of the coordinates, in practice) is refused before any point is made.
@@ -73,8 +74,13 @@ pub(crate) fn flatten_wang<C: BezierForm<2> + ?Sized>(
         }
         _ => {
             let n = count(p)?;
-            let horner = HornerBernstein::new(p);
             let (first, last) = (p[0], p[p.len() - 1]);
+            // Up to `MAX_STACK_DEGREE` the scaled control points sit in the stack frame.
+            let mut buffer = [Vector2::zeros(); STACK_POINTS];
+            if let Some(horner) = StackHorner::new(p, &mut buffer) {
+                return Ok(uniform(n, first, last, |t| horner.eval(t), sink));
+            }
+            let horner = HornerBernstein::new(p);
             // `None` only for an empty polygon, excluded above.
             let eval = |t: f64| horner.eval(t).unwrap_or(first);
             Ok(uniform(n, first, last, eval, sink))

@@ -1,7 +1,7 @@
 //! The near-optimal flattening (`Method::Optimal`) stays close to N* segments (N* the
 //! asymptotic lower bound) with a measured Hausdorff error ≤ tol, on the N* table's curves and
-//! on a wider seeded set: within 1.15 N* up to degree 3 (where its bounds are exact) and within
-//! 1.7 N* above (where they come from the control polygons of pieces; measured up to 1.64).
+//! on a wider seeded set: within 1.15 N* up to degree 3 and within 1.25 N* above (where each
+//! chord is measured on cubic models of the curve, with their remainders added).
 #![allow(
     clippy::unwrap_used,
     clippy::expect_used,
@@ -33,7 +33,7 @@ fn segments_and_bound(c: &BezierCurve<2>, eps: f64) -> (f64, f64) {
 
 /// The ratio allowed at `degree`.
 fn allowed(degree: usize) -> f64 {
-    if degree <= 3 { 1.15 } else { 1.7 }
+    if degree <= 3 { 1.15 } else { 1.25 }
 }
 
 #[test]
@@ -64,6 +64,32 @@ fn close_to_n_star_or_one_more_than_its_ceiling_on_degrees_2_to_30() {
             segments <= bound,
             "curve {k} (degree {}): {segments} segments, N* = {n_star}",
             c.degree()
+        );
+    }
+}
+
+/// Above degree 3 (the march on cubic models), 40 seeded random curves per degree at
+/// 1e-3 × size: median ≤ 1.10 N* and every curve ≤ 1.25 N* (measured medians 1.075–1.09,
+/// maxima 1.14–1.21).
+#[test]
+fn counts_above_degree_3_on_random_curves() {
+    for degree in [4, 5, 8, 12, 17, 25, 30] {
+        let mut ratios: Vec<f64> = random_curves(degree, 40, 900 + degree as u64)
+            .iter()
+            .map(|c| {
+                let tol = 1e-3 * curve_size(c);
+                let n = Flattener::new(tol)
+                    .with_method(Method::Optimal)
+                    .flatten(c, |_| {})
+                    .unwrap();
+                n as f64 / optimal_segment_count(c, tol).unwrap()
+            })
+            .collect();
+        ratios.sort_by(f64::total_cmp);
+        let (median, max) = (ratios[20], ratios[39]);
+        assert!(
+            median <= 1.10 && max <= 1.25,
+            "degree {degree}: {median} {max}"
         );
     }
 }

@@ -15,10 +15,10 @@ use std::time::{Duration, Instant};
 use bez_core::{BezierCurve, Vector2};
 use bez_subdiv::{
     ADAPTIVE_BAND, Branch, Choice, FlatPoint, Flattener, HausdorffSampling, LOCAL_WANG_STEPS,
-    Levels, MAX_FLATTEN_DEPTH, MAX_HAUSDORFF_WORK, MAX_WANG_SEGMENTS, Method, Objective,
-    PAPER_LEVELS, PathPoint, Search, SplitRule, SubdivError, chord_deviation, curve_size,
-    distance_to_chord_line, distance_to_segment, flatness, hull_area, max_chord_distance,
-    measured_hausdorff, optimal_segment_count, wang_segment_count,
+    Levels, MAX_FLATTEN_DEPTH, MAX_HAUSDORFF_WORK, MAX_STACK_DEGREE, MAX_WANG_SEGMENTS, Method,
+    Objective, PAPER_LEVELS, PathPoint, Search, SplitRule, SubdivError, chord_deviation,
+    curve_size, distance_to_chord_line, distance_to_segment, flatness, hull_area,
+    max_chord_distance, measured_hausdorff, optimal_segment_count, wang_segment_count,
 };
 use proptest::prelude::*;
 
@@ -241,6 +241,7 @@ fn constants_and_errors() {
     assert_eq!(MAX_FLATTEN_DEPTH, 48);
     assert_eq!(MAX_WANG_SEGMENTS, 1 << 24);
     assert_eq!(LOCAL_WANG_STEPS, 16);
+    assert_eq!(MAX_STACK_DEGREE, 64);
     assert_eq!(PAPER_LEVELS, 3);
     assert_eq!(MAX_HAUSDORFF_WORK, 2f64.powi(32));
     const { assert!(ADAPTIVE_BAND > 0.0 && ADAPTIVE_BAND < 0.5) };

@@ -18,6 +18,10 @@ use crate::timing::{Run, best_micros};
 const EPS: f64 = 1e-5;
 /// The speed target, µs per output point.
 const TARGET_MICROS: f64 = 0.3;
+/// `Method::Optimal`'s own target, µs per output point.
+const OPTIMAL_TARGET_MICROS: f64 = 0.1;
+/// The coarser tolerance of the second `Method::Optimal` row, as a multiple of ε.
+const COARSE: f64 = 100.0;
 /// Rounds of the interleaved timing, and the wall time of each mode in a round (µs).
 const ROUNDS: usize = 20;
 const ROUND_MICROS: f64 = 2000.0;
@@ -58,6 +62,13 @@ fn modes() -> Vec<Mode> {
     modes.push((
         "near-optimal, `Method::Optimal`".into(),
         Box::new(|c, tol, out| points(c, tol, Method::Optimal, out)),
+    ));
+    modes.push((
+        format!(
+            "near-optimal at tol = {} × size, `Method::Optimal`",
+            COARSE * EPS
+        ),
+        Box::new(|c, tol, out| points(c, COARSE * tol, Method::Optimal, out)),
     ));
     modes
 }
@@ -105,7 +116,8 @@ pub(crate) fn table() -> Result<Table, DynError> {
          polyline's points (for the eq. (3) rules the pieces' control polygons, 25 segments per \
          piece; Table 1's rules through the general `flatten`, which allocates per piece). Time: in-process, interleaved: {ROUNDS} rounds of about {ROUND_MICROS} µs of \
          calls of every mode in turn, each mode's fastest round, on the machine that wrote this \
-         file; not checked. Target: under {TARGET_MICROS} µs per output point.\n\n\
+         file; not checked. Target: under {TARGET_MICROS} µs per output point, for \
+         `Method::Optimal` under {OPTIMAL_TARGET_MICROS} µs.\n\n\
          | mode | output points | time (µs) | per point (µs) | under {TARGET_MICROS} µs |\n\
          |---|---|---|---|---|\n"
     );

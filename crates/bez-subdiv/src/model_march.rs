@@ -1,0 +1,414 @@
+//! Beyond the paper: [`Method::Optimal`](crate::Method::Optimal) above degree 3, a greedy march
+//! over the cubic models of [`cubic_model`](crate::cubic_model) with each chord's distance to
+//! the models computed exactly.
+//!
+//! The curve B is covered by cubic models Cₖ on consecutive parameter ranges with
+//! |B(t) − Cₖ(σ)| ≤ rₖ. For a chord over [a, b] the march computes the Hausdorff distance e
+//! between the models' arc C([a, b]) and the chord from C(a) to C(b) (a bound that is exact
+//! when the arc projects monotonically, see [`Window::bound`]); the points it sends are the
+//! curve's own B(a), B(b), each within r of C(a), C(b), so the polyline through them is within
+//! e + 2 maxₖ rₖ of B([a, b]) both ways. Each chord is the longest that passes on a short
+//! search; a point costs one O(n) evaluation of B (Horner), every try O(1), every model two
+//! O(n) evaluations (B and B′ at its end), and every block of about 16 models one O(n²) de
+//! Casteljau split.
+
+use bez_core::{HornerBernstein, Vector2, hodograph_slice};
+
+use crate::cubic_model::{Model, ModelStream};
+use crate::error::SubdivError;
+use crate::guaranteed::FlatPoint;
+use crate::stack_horner::{STACK_POINTS, StackHorner};
+
+/// The most segments one call places (2²⁰), as up to degree 3.
+const MAX_SEGMENTS: usize = crate::optimal::MAX_OPTIMAL_SEGMENTS;
+/// The models' remainder target as a fraction of the tolerance: 2r costs 1/32 of it, about
+/// 1.6 % more segments.
+const MODEL_TARGET: f64 = 1.0 / 64.0;
+/// The most a model's remainder may be when rounding alone exceeds the target (tolerances near
+/// the rounding floor).
+const MODEL_CEILING: f64 = 0.25;
+/// Models held ahead of the march (a chord spans at most this many).
+const WINDOW: usize = 32;
+/// A chord whose bound is below this fraction of the tolerance is tried longer.
+const EXTEND_BELOW: f64 = 0.92;
+/// Longer tries per chord.
+const MAX_EXTENSIONS: usize = 2;
+
+/// Streams the points of `Method::Optimal` for a curve of degree ≥ 4 with control points `p`
+/// after B(0) (sent by the caller): every chord within `accept` of the curve, the last point
+/// Pₙ at t = 1. Returns the number of segments. Up to degree
+/// [`MAX_STACK_DEGREE`](crate::MAX_STACK_DEGREE) nothing is allocated.
+///
+/// # Errors
+/// [`SubdivError::DepthLimit`] when a chord or a model shorter than 2^−`max_depth` fails,
+/// [`SubdivError::TooManySegments`] above 2²⁰ segments.
+pub(crate) fn march_models(
+    p: &[Vector2],
+    accept: f64,
+    max_depth: usize,
+    mut sink: impl FnMut(FlatPoint),
+) -> Result<usize, SubdivError> {
+    let len = p.len();
+    let n = (len - 1) as f64;
+    let (origin, last) = (p[0], p[len - 1]);
+    // The models and B are taken relative to P₀, so that their rounding follows the curve's
+    // extent, not its distance from the origin; the points sent are P₀ + (B − P₀)(t).
+    let send = |t: f64, relative: Vector2| FlatPoint {
+        t,
+        point: if t >= 1.0 { last } else { origin + relative },
+    };
+    if len <= STACK_POINTS {
+        let mut buffers = [[Vector2::zeros(); STACK_POINTS]; 7];
+        let [
+            relative,
+            rest,
+            left,
+            right,
+            scaled,
+            hodograph,
+            scaled_hodograph,
+        ] = &mut buffers;
+        for (r, &q) in relative.iter_mut().zip(p) {
+            *r = q - origin;
+        }
+        for (h, w) in hodograph.iter_mut().zip(p.windows(2)) {
+            *h = (w[1] - w[0]) * n;
+        }
+        let relative = &relative[..len];
+        if let (Some(point), Some(tangent)) = (
+            StackHorner::new(relative, scaled),
+            StackHorner::new(&hodograph[..len - 1], scaled_hodograph),
+        ) {
+            return march(
+                relative,
+                (|t| point.eval(t), |t| tangent.eval(t)),
+                [&mut rest[..len], &mut left[..len], &mut right[..len]],
+                accept,
+                max_depth,
+                |t, q| sink(send(t, q)),
+            );
+        }
+    }
+    let relative: Vec<Vector2> = p.iter().map(|&q| q - origin).collect();
+    let mut buffer = vec![Vector2::zeros(); 3 * len];
+    let (rest, others) = buffer.split_at_mut(len);
+    let (left, right) = others.split_at_mut(len);
+    let (point, tangent) = (
+        HornerBernstein::new(&relative),
+        HornerBernstein::new(&hodograph_slice(p)),
+    );
+    let zero = Vector2::zeros();
+    march(
+        &relative,
+        (
+            |t| point.eval(t).unwrap_or(zero),
+            |t| tangent.eval(t).unwrap_or(zero),
+        ),
+        [rest, left, right],
+        accept,
+        max_depth,
+        |t, q| sink(send(t, q)),
+    )
+}
+
+/// The models from the march's position on, in a ring of [`WINDOW`].
+struct Window<'a, E, D> {
+    stream: ModelStream<'a, E, D>,
+    models: [Model; WINDOW],
+    front: usize,
+    len: usize,
+    done: bool,
+}
+
+impl<E: Fn(f64) -> Vector2, D: Fn(f64) -> Vector2> Window<'_, E, D> {
+    fn get(&self, k: usize) -> &Model {
+        &self.models[(self.front + k) % WINDOW]
+    }
+
+    /// The end of the last model held.
+    fn reach(&self) -> f64 {
+        if self.len == 0 {
+            0.0
+        } else {
+            self.get(self.len - 1).t1
+        }
+    }
+
+    /// Drops the models that end at or before t.
+    fn drop_before(&mut self, t: f64) {
+        while self.len > 1 && self.get(0).t1 <= t {
+            self.front = (self.front + 1) % WINDOW;
+            self.len -= 1;
+        }
+    }
+
+    /// Takes models from the stream until they reach t, the window is full or the curve ends.
+    fn fill_to(&mut self, t: f64) -> Result<(), SubdivError> {
+        while !self.done && self.len < WINDOW && (self.len == 0 || self.reach() < t) {
+            match self.stream.next_model()? {
+                Some(model) => {
+                    self.models[(self.front + self.len) % WINDOW] = model;
+                    self.len += 1;
+                }
+                None => self.done = true,
+            }
+        }
+        Ok(())
+    }
+
+    /// The bound on the distance between the curve over [`ta`, `tb`] and the chord between
+    /// its points there, and the models' point at `tb`; `pa` is the models' point at `ta`.
+    ///
+    /// With d = C(tb) − `pa` and u = d / |d|, on each model the arc's offset u × (C − `pa`) and
+    /// projection u · (C − `pa`) are cubics in σ, whose extremes over the model's part of
+    /// [`ta`, `tb`] are found exactly (the ends and the roots of the quadratic derivative).
+    /// Every arc point is within hypot(max |offset|, overshoot) of the chord (overshoot: how
+    /// far the projection leaves [0, |d|]), and the continuous projection covers [0, |d|], so
+    /// every chord point has an arc point at distance ≤ max |offset|: that is the Hausdorff
+    /// distance between arc and chord when the projection stays inside. Then add 2 maxₖ rₖ (the
+    /// curve and its chord are each within r of the models' arc and chord).
+    fn bound(&self, ta: f64, pa: Vector2, tb: f64) -> (f64, Vector2) {
+        let mut k = 0;
+        while k + 1 < self.len && self.get(k).t1 < tb {
+            k += 1;
+        }
+        let pb = self.get(k).point(tb);
+        let d = pb - pa;
+        let len = d.norm();
+        let inverse_len = 1.0 / len;
+        let (mut offset, mut lo, mut hi, mut r) = (0.0_f64, 0.0_f64, len, 0.0_f64);
+        for j in 0..=k {
+            let m = self.get(j);
+            if m.t1 <= ta {
+                continue;
+            }
+            r = r.max(m.r);
+            let (s0, s1) = (m.sigma(ta.max(m.t0)), m.sigma(tb.min(m.t1)));
+            let rel = m.p0 - pa;
+            if len > 0.0 {
+                let u = d * inverse_len;
+                let cross = [u.perp(&rel), u.perp(&m.a), u.perp(&m.b), u.perp(&m.c)];
+                let (low, high) = cubic_range(cross, s0, s1);
+                offset = offset.max(high).max(-low);
+                let along = [u.dot(&rel), u.dot(&m.a), u.dot(&m.b), u.dot(&m.c)];
+                if !increasing(along, s0, s1) {
+                    let (low, high) = cubic_range(along, s0, s1);
+                    lo = lo.min(low);
+                    hi = hi.max(high);
+                }
+            } else {
+                // A closed chord: the distance to its point, bounded term by term.
+                let reach = rel.norm() + s1 * (m.a.norm() + s1 * (m.b.norm() + s1 * m.c.norm()));
+                offset = offset.max(reach);
+            }
+        }
+        let overshoot = (-lo).max(hi - len);
+        let e = if overshoot > 0.0 {
+            (offset * offset + overshoot * overshoot).sqrt()
+        } else {
+            offset
+        };
+        (e + 2.0 * r, pb)
+    }
+}
+
+/// Whether k₀ + k₁ s + k₂ s² + k₃ s³ is non-decreasing on [s0, s1], by a sufficient test
+/// without divisions: its derivative, a quadratic, lies above its Bernstein coefficients on
+/// [s0, s1] (the values at both ends and the one between), which are then ≥ 0. A monotone
+/// projection has no overshoot: its values stay between those at the chord's ends.
+#[inline]
+fn increasing(k: [f64; 4], s0: f64, s1: f64) -> bool {
+    let slope = |s: f64| k[1] + s * (2.0 * k[2] + s * 3.0 * k[3]);
+    let (d0, d1) = (slope(s0), slope(s1));
+    let middle = d0 + 0.5 * (s1 - s0) * (2.0 * k[2] + 6.0 * k[3] * s0);
+    d0 >= 0.0 && d1 >= 0.0 && middle >= 0.0
+}
+
+/// The least and greatest values of k₀ + k₁ s + k₂ s² + k₃ s³ over [s0, s1]: at the ends and at
+/// the roots of the derivative k₁ + 2k₂ s + 3k₃ s² inside (the cancellation-free pair q / A,
+/// C / q of the quadratic A s² + B s + C).
+#[inline]
+fn cubic_range(k: [f64; 4], s0: f64, s1: f64) -> (f64, f64) {
+    let f = |s: f64| k[0] + s * (k[1] + s * (k[2] + s * k[3]));
+    let (f0, f1) = (f(s0), f(s1));
+    let (mut lo, mut hi) = (f0.min(f1), f0.max(f1));
+    let mut visit = |s: f64| {
+        if s > s0 && s < s1 {
+            let v = f(s);
+            lo = lo.min(v);
+            hi = hi.max(v);
+        }
+    };
+    let (qa, qb, qc) = (3.0 * k[3], 2.0 * k[2], k[1]);
+    if qa == 0.0 {
+        if qb != 0.0 {
+            visit(-qc / qb);
+        }
+    } else {
+        let disc = qb * qb - 4.0 * qa * qc;
+        if disc >= 0.0 {
+            let q = -0.5 * (qb + qb.signum() * disc.sqrt());
+            visit(q / qa);
+            if q != 0.0 {
+                visit(qc / q);
+            }
+        }
+    }
+    (lo, hi)
+}
+
+/// The march on the models of `p` (buffers for [`ModelStream`]) with `eval` for B, sending
+/// each point (t, B(t)) after the first to `sink`.
+fn march<E: Fn(f64) -> Vector2, D: Fn(f64) -> Vector2>(
+    p: &[Vector2],
+    (eval, tangent): (E, D),
+    buffers: [&mut [Vector2]; 3],
+    accept: f64,
+    max_depth: usize,
+    mut sink: impl FnMut(f64, Vector2),
+) -> Result<usize, SubdivError> {
+    let stream = ModelStream::new(
+        p,
+        (&eval, tangent),
+        buffers,
+        (accept * MODEL_TARGET, accept * MODEL_CEILING),
+        max_depth,
+    );
+    let mut window = Window {
+        stream,
+        models: [Model {
+            t0: 0.0,
+            t1: 0.0,
+            inverse_span: 0.0,
+            p0: Vector2::zeros(),
+            a: Vector2::zeros(),
+            b: Vector2::zeros(),
+            c: Vector2::zeros(),
+            end: Vector2::zeros(),
+            r: 0.0,
+        }; WINDOW],
+        front: 0,
+        len: 0,
+        done: false,
+    };
+    window.fill_to(0.0)?;
+    let min_step = 0.5_f64.powi(i32::try_from(max_depth).unwrap_or(i32::MAX));
+    let (mut ta, mut pa) = (0.0_f64, p[0]);
+    let mut step = first_step(window.get(0), accept);
+    let mut segments = 0;
+    while ta < 1.0 {
+        window.drop_before(ta);
+        let mut best: Option<(f64, Vector2, f64)> = None;
+        let mut extensions = 0;
+        loop {
+            let want = if ta + step >= 1.0 { 1.0 } else { ta + step };
+            window.fill_to(want)?;
+            let tb = want.min(window.reach());
+            let (e, pb) = window.bound(ta, pa, tb);
+            let h = tb - ta;
+            if e <= accept {
+                best = Some((tb, pb, e));
+                if e >= EXTEND_BELOW * accept || tb >= 1.0 || extensions == MAX_EXTENSIONS {
+                    break;
+                }
+                // Well inside: try longer (the bound grows like h²).
+                extensions += 1;
+                let grow = if e > 0.0 {
+                    (0.995 * (accept / e).sqrt()).min(2.0)
+                } else {
+                    2.0
+                };
+                if tb < want {
+                    // The window is full: the chord cannot be longer.
+                    break;
+                }
+                step = h * grow;
+                continue;
+            }
+            if best.is_some() {
+                // A longer try failed: keep the one that passed.
+                break;
+            }
+            // Also for a NaN bound: the depth limit ends the shortening.
+            let shrink = if e.is_finite() {
+                (0.995 * (accept / e).sqrt()).clamp(0.3, 0.99)
+            } else {
+                0.5
+            };
+            if h * shrink < min_step {
+                return Err(SubdivError::DepthLimit { limit: max_depth });
+            }
+            step = h * shrink;
+        }
+        let Some((tb, pb, e)) = best else {
+            break;
+        };
+        segments += 1;
+        if segments > MAX_SEGMENTS {
+            return Err(SubdivError::TooManySegments {
+                tolerance: accept,
+                limit: MAX_SEGMENTS,
+            });
+        }
+        sink(tb, if tb >= 1.0 { p[p.len() - 1] } else { eval(tb) });
+        // The next chord's first try: this one's length, rescaled to fill the tolerance.
+        let h = tb - ta;
+        step = if e > 0.0 {
+            h * (0.995 * (accept / e).sqrt()).clamp(0.5, 2.0)
+        } else {
+            2.0 * h
+        };
+        (ta, pa) = (tb, pb);
+    }
+    Ok(segments)
+}
+
+/// The first chord's length from the density √(|C′ × C″| / |C′|) of the first model at t = 0
+/// (an arc of curvature κ and parameter length h deviates from its chord by about
+/// κ |C′|² h² / 8), the whole first model where it vanishes.
+fn first_step(m: &Model, accept: f64) -> f64 {
+    let w = m.t1 - m.t0;
+    let (d1, d2) = (m.a / w, m.b * (2.0 / (w * w)));
+    let speed = d1.norm();
+    let density = if speed > 0.0 {
+        (d1.perp(&d2).abs() / speed).sqrt()
+    } else {
+        0.0
+    };
+    let h = (8.0 * accept).sqrt() / density;
+    if h.is_finite() && h > 0.0 {
+        h.min(1.0)
+    } else {
+        w
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// `cubic_range` against dense sampling, with extremes inside and outside the range.
+    #[test]
+    fn cubic_range_is_the_range() {
+        for k in [
+            [0.0, 1.0, -3.0, 2.0],
+            [1.0, 0.0, 0.0, 0.0],
+            [0.5, -2.0, 1.0, 0.0],
+            [0.0, 0.0, 0.0, 1.0],
+            [-1.0, 4.0, -6.0, 1.5],
+        ] {
+            for (s0, s1) in [(0.0, 1.0), (0.2, 0.7), (0.5, 0.5)] {
+                let (lo, hi) = cubic_range(k, s0, s1);
+                let (mut slo, mut shi) = (f64::INFINITY, f64::NEG_INFINITY);
+                for i in 0..=100_000 {
+                    let s = s0 + (s1 - s0) * f64::from(i) / 100_000.0;
+                    let v = k[0] + s * (k[1] + s * (k[2] + s * k[3]));
+                    slo = slo.min(v);
+                    shi = shi.max(v);
+                }
+                assert!(lo <= slo && lo >= slo - 1e-9, "{k:?} {s0} {s1}: {lo} {slo}");
+                assert!(hi >= shi && hi <= shi + 1e-9, "{k:?} {s0} {s1}: {hi} {shi}");
+            }
+        }
+    }
+}

@@ -9,7 +9,7 @@ use crate::guaranteed::{FlatPoint, stream_guaranteed};
 use crate::local_wang::stream_local_wang;
 use crate::optimal::flatten_optimal;
 use crate::split_rule::SplitRule;
-use crate::wang::flatten_wang;
+use crate::wang::{flatten_wang, flatten_wang_small};
 
 /// How a [`Flattener`] places its points. Every method but [`Method::PaperRule`] guarantees
 /// that the polyline is within the tolerance of the curve in Hausdorff distance.
@@ -134,12 +134,20 @@ impl Flattener {
     /// estimated before the first point is above the method's limit, all checked before any
     /// point is sent; [`SubdivError::DepthLimit`] when a piece still fails at the depth cap
     /// (the points before it have been sent).
+    #[inline]
     pub fn flatten<C: BezierForm<2> + ?Sized>(
         &self,
         curve: &C,
         mut sink: impl FnMut(FlatPoint),
     ) -> Result<usize, SubdivError> {
         let bezier = curve.as_bezier();
+        // `Fast` on a quadratic or a cubic of usual size: no square root and no dynamic
+        // dispatch before the points (`None`, nothing sent, when the general path decides).
+        if let Method::Fast = self.method
+            && let Some(n) = flatten_wang_small(bezier.points(), self.tolerance, &mut sink)
+        {
+            return Ok(n);
+        }
         if let Some(exponent) = unit_exponent(bezier) {
             // Far from unit size, flatten the curve scaled by 2^−exponent (exact) with the
             // tolerance scaled alike, and scale the points back: the result is the scaled

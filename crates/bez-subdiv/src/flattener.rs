@@ -17,7 +17,7 @@ use crate::wang::{flatten_wang, flatten_wang_small};
 /// | method | segments / N* (random cubics, tol = 1e-3 × size) | cost | use it for |
 /// |---|---|---|---|
 /// | [`Fast`](Method::Fast) | about 2 | fastest: no subdivision, a few flops per point (about 0.1 × kurbo's `flatten`) | rendering, hit testing, anything per frame |
-/// | [`Optimal`](Method::Optimal) | median 1.05, 90th percentile 1.10 | about kurbo's `flatten` on cubics (1.15–1.17 × its time on random cubics, 0.92–0.94 × on adversarial ones); about 0.5 µs per point at degree 25 | output that is stored or sent (fewest points) |
+/// | [`Optimal`](Method::Optimal) | median 1.05, 90th percentile 1.10 | about kurbo's `flatten` on cubics (1.12 × its time on random cubics, 0.89–0.91 × on adversarial ones); about 0.5 µs per point at degree 25 | output that is stored or sent (fewest points) |
 /// | [`LocalWang`](Method::LocalWang) | 1.6–2.0 | one halving per up to 16 points | high degrees |
 /// | [`Halving`](Method::Halving) | about 1.7 | one de Casteljau halving per segment | — |
 /// | [`PaperRule`](Method::PaperRule) | — | — | reproducing Ma, Lin & Shen's Table 1 only: **no guarantee** |
@@ -29,8 +29,11 @@ pub enum Method {
     /// points ([`wang_segment_count`](crate::wang_segment_count)): the chord of a parameter step h
     /// interpolates B within h²/8 · max|B″| and |B″| ≤ n(n − 1) M. lyon_geom's count for
     /// quadratics and cubics; no subdivision, no allocation; O(1) per point up to degree 3
-    /// (Horner on the power form), O(n) above. At most [`MAX_WANG_SEGMENTS`](crate::MAX_WANG_SEGMENTS)
-    /// segments, checked before the first point.
+    /// (the power form), O(n) above. At most [`MAX_WANG_SEGMENTS`](crate::MAX_WANG_SEGMENTS)
+    /// segments, checked before the first point. On quadratics and cubics needing at most 32
+    /// segments, N is read from a table of fourth powers (no square root); it rounds up, so it
+    /// is one more than the formula where the formula's value is within about 2⁻⁴⁸ of a whole
+    /// number.
     #[default]
     Fast,
     /// Wang's bound piece by piece: the curve is halved (de Casteljau at ½) until a piece needs

@@ -4,9 +4,13 @@
 
 use std::hint::black_box;
 
+use bez_core::{BezierCurve, Vector2};
 use bez_subdiv::{FlattenOptions, Flattener, Method, SplitRule, flatten, flatten_fixed_into};
 use bezkit_benches::random_curve;
-use criterion::{BenchmarkId, Criterion, Throughput, criterion_group, criterion_main};
+use criterion::measurement::WallTime;
+use criterion::{
+    BenchmarkGroup, BenchmarkId, Criterion, Throughput, criterion_group, criterion_main,
+};
 
 fn rules(c: &mut Criterion) {
     for (name, rule) in [
@@ -26,30 +30,106 @@ fn rules(c: &mut Criterion) {
     }
 }
 
+/// A flattener of the peer comparisons.
+#[derive(Clone, Copy)]
+enum Peer {
+    Bezkit(Method),
+    /// kurbo's `flatten` of a one-curve path.
+    Kurbo,
+    /// lyon_geom's `for_each_flattened` (quadratic or cubic segment).
+    Lyon,
+}
+
+/// The polyline of `curve` at `tol` by `peer` into `out` (cleared first); returns the number of
+/// segments.
+fn polyline(
+    peer: Peer,
+    curve: &BezierCurve<2>,
+    path: &kurbo::BezPath,
+    tol: f64,
+    out: &mut Vec<Vector2>,
+) -> usize {
+    use lyon_geom::{CubicBezierSegment, QuadraticBezierSegment, point};
+    out.clear();
+    match peer {
+        Peer::Bezkit(method) => {
+            let flattener = Flattener::new(tol).with_method(method);
+            // The benchmarked curves are valid: an error sends no point and counts none.
+            let _ = flattener.flatten(curve, |q| out.push(q.point));
+        }
+        Peer::Kurbo => kurbo::flatten(path, tol, |el| {
+            if let kurbo::PathEl::MoveTo(q) | kurbo::PathEl::LineTo(q) = el {
+                out.push(Vector2::new(q.x, q.y));
+            }
+        }),
+        Peer::Lyon => {
+            let p = curve.points();
+            let q = |i: usize| point(p[i].x(), p[i].y());
+            out.push(p[0]);
+            let mut push = |s: &lyon_geom::LineSegment<f64>| out.push(Vector2::new(s.to.x, s.to.y));
+            if p.len() == 3 {
+                let segment = QuadraticBezierSegment {
+                    from: q(0),
+                    ctrl: q(1),
+                    to: q(2),
+                };
+                segment.for_each_flattened(tol, &mut push);
+            } else {
+                let segment = CubicBezierSegment {
+                    from: q(0),
+                    ctrl1: q(1),
+                    ctrl2: q(2),
+                    to: q(3),
+                };
+                segment.for_each_flattened(tol, &mut push);
+            }
+        }
+    }
+    out.len().saturating_sub(1)
+}
+
+/// Benchmarks each of `peers` on `curve` (a quadratic or a cubic) at the absolute tolerance
+/// `tol` in `g`, named `label/name`, throughput its own segment count; checks that
+/// `Method::Fast` and lyon_geom make the same count (Wang's) when both are compared.
+fn compare(
+    g: &mut BenchmarkGroup<'_, WallTime>,
+    name: &str,
+    curve: &BezierCurve<2>,
+    tol: f64,
+    peers: &[(&str, Peer)],
+) {
+    let Ok(path) = bez_core::curves_to_bez_path(std::slice::from_ref(curve)) else {
+        return;
+    };
+    let mut out = Vec::new();
+    let mut wang = Vec::new();
+    for &(label, peer) in peers {
+        let segments = polyline(peer, curve, &path, tol, &mut out);
+        if matches!(peer, Peer::Bezkit(Method::Fast) | Peer::Lyon) {
+            wang.push(segments);
+        }
+        g.throughput(Throughput::Elements(segments as u64));
+        g.bench_function(BenchmarkId::new(label, name), |b| {
+            b.iter(|| polyline(peer, black_box(curve), &path, tol, &mut out));
+        });
+    }
+    assert!(
+        wang.windows(2).all(|w| w[0] == w[1]),
+        "{name}: Method::Fast's count is lyon_geom's: {wang:?}"
+    );
+}
+
 /// The peer cubics at the same absolute tolerance (1e-5 × curve size): ours (eq. (3), fixed
-/// rule, general and allocation-free path), kurbo's `flatten` and lyon_geom's
+/// rule, general and allocation-free path; `Method::Fast`), kurbo's `flatten` and lyon_geom's
 /// `for_each_flattened`. Throughput: output segments of each method.
 fn versus_peers(c: &mut Criterion) {
-    use lyon_geom::{CubicBezierSegment, point};
     let options = FlattenOptions::default();
     let mut g = c.benchmark_group("cubic_flatten_peers");
     for (name, curve) in bez_subdiv::cases::peer_cubics() {
-        let p = curve.points();
-        let tol = 1e-5 * bez_subdiv::curve_size(&curve);
-        let Ok(path) = bez_core::curves_to_bez_path(std::slice::from_ref(&curve)) else {
-            continue;
-        };
-        let lyon = CubicBezierSegment {
-            from: point(p[0].x(), p[0].y()),
-            ctrl1: point(p[1].x(), p[1].y()),
-            ctrl2: point(p[2].x(), p[2].y()),
-            to: point(p[3].x(), p[3].y()),
-        };
         let Ok(ours) = flatten(&curve, &options) else {
             continue;
         };
-        let ours_segments = ours.polyline.len() as u64 - 1;
-        g.throughput(Throughput::Elements(ours_segments));
+        g.throughput(Throughput::Elements(ours.polyline.len() as u64 - 1));
         g.bench_function(BenchmarkId::new("bezkit flatten, fixed rule", &name), |b| {
             b.iter(|| flatten(black_box(&curve), &options));
         });
@@ -59,46 +139,13 @@ fn versus_peers(c: &mut Criterion) {
                 flatten_fixed_into(black_box(&curve), 1e-5, 40, &mut polyline).map(|s| s.pieces)
             });
         });
-        let mut kurbo_points = Vec::new();
-        kurbo::flatten(&path, tol, |el| kurbo_points.push(el));
-        g.throughput(Throughput::Elements(kurbo_points.len() as u64 - 1));
-        g.bench_function(BenchmarkId::new("kurbo flatten", &name), |b| {
-            b.iter(|| {
-                kurbo_points.clear();
-                kurbo::flatten(black_box(&path), tol, |el| kurbo_points.push(el));
-                kurbo_points.len()
-            });
-        });
-        let mut wang_points = Vec::new();
-        let fast = Flattener::new(tol);
-        let Ok(wang_segments) = fast.flatten(&curve, |p| wang_points.push(p.point)) else {
-            continue;
-        };
-        g.throughput(Throughput::Elements(wang_segments as u64));
-        g.bench_function(BenchmarkId::new("bezkit Method::Fast", &name), |b| {
-            b.iter(|| {
-                wang_points.clear();
-                fast.flatten(black_box(&curve), |p| wang_points.push(p.point))
-            });
-        });
-        let mut lyon_points = Vec::new();
-        lyon.for_each_flattened(tol, &mut |s| lyon_points.push(s.to));
-        assert_eq!(
-            lyon_points.len(),
-            wang_segments,
-            "{name}: Wang's count as lyon_geom's"
-        );
-        g.throughput(Throughput::Elements(lyon_points.len() as u64));
-        g.bench_function(
-            BenchmarkId::new("lyon_geom for_each_flattened", &name),
-            |b| {
-                b.iter(|| {
-                    lyon_points.clear();
-                    black_box(&lyon).for_each_flattened(tol, &mut |s| lyon_points.push(s.to));
-                    lyon_points.len()
-                });
-            },
-        );
+        let tol = 1e-5 * bez_subdiv::curve_size(&curve);
+        let peers = [
+            ("kurbo flatten", Peer::Kurbo),
+            ("bezkit Method::Fast", Peer::Bezkit(Method::Fast)),
+            ("lyon_geom for_each_flattened", Peer::Lyon),
+        ];
+        compare(&mut g, &name, &curve, tol, &peers);
     }
     g.finish();
 }
@@ -107,60 +154,16 @@ fn versus_peers(c: &mut Criterion) {
 /// peer cubics at the same absolute tolerance, 1e-3 × the curve's size (the standing
 /// comparison's tolerance). Throughput: output segments of each method.
 fn flattener_versus_peers(c: &mut Criterion) {
-    use lyon_geom::{CubicBezierSegment, point};
     let mut g = c.benchmark_group("flattener_vs_peers");
+    let peers = [
+        ("bezkit Optimal", Peer::Bezkit(Method::Optimal)),
+        ("bezkit Fast", Peer::Bezkit(Method::Fast)),
+        ("kurbo flatten", Peer::Kurbo),
+        ("lyon_geom for_each_flattened", Peer::Lyon),
+    ];
     for (name, curve) in bez_subdiv::cases::peer_cubics() {
-        let p = curve.points();
         let tol = 1e-3 * bez_subdiv::curve_size(&curve);
-        let Ok(path) = bez_core::curves_to_bez_path(std::slice::from_ref(&curve)) else {
-            continue;
-        };
-        let lyon = CubicBezierSegment {
-            from: point(p[0].x(), p[0].y()),
-            ctrl1: point(p[1].x(), p[1].y()),
-            ctrl2: point(p[2].x(), p[2].y()),
-            to: point(p[3].x(), p[3].y()),
-        };
-        for (label, method) in [
-            ("bezkit Optimal", Method::Optimal),
-            ("bezkit Fast", Method::Fast),
-        ] {
-            let flattener = Flattener::new(tol).with_method(method);
-            let mut points = Vec::new();
-            let Ok(segments) = flattener.flatten(&curve, |q| points.push(q.point)) else {
-                continue;
-            };
-            g.throughput(Throughput::Elements(segments as u64));
-            g.bench_function(BenchmarkId::new(label, &name), |b| {
-                b.iter(|| {
-                    points.clear();
-                    flattener.flatten(black_box(&curve), |q| points.push(q.point))
-                });
-            });
-        }
-        let mut kurbo_points = Vec::new();
-        kurbo::flatten(&path, tol, |el| kurbo_points.push(el));
-        g.throughput(Throughput::Elements(kurbo_points.len() as u64 - 1));
-        g.bench_function(BenchmarkId::new("kurbo flatten", &name), |b| {
-            b.iter(|| {
-                kurbo_points.clear();
-                kurbo::flatten(black_box(&path), tol, |el| kurbo_points.push(el));
-                kurbo_points.len()
-            });
-        });
-        let mut lyon_points = Vec::new();
-        lyon.for_each_flattened(tol, &mut |s| lyon_points.push(s.to));
-        g.throughput(Throughput::Elements(lyon_points.len() as u64));
-        g.bench_function(
-            BenchmarkId::new("lyon_geom for_each_flattened", &name),
-            |b| {
-                b.iter(|| {
-                    lyon_points.clear();
-                    black_box(&lyon).for_each_flattened(tol, &mut |s| lyon_points.push(s.to));
-                    lyon_points.len()
-                });
-            },
-        );
+        compare(&mut g, &name, &curve, tol, &peers);
     }
     g.finish();
 }
@@ -169,43 +172,21 @@ fn flattener_versus_peers(c: &mut Criterion) {
 /// count) on three seeded random quadratics at 1e-3 and 1e-5 × the curve's size; the counts are
 /// asserted equal. Throughput: output segments.
 fn quadratics_versus_lyon(c: &mut Criterion) {
-    use lyon_geom::{QuadraticBezierSegment, point};
     let mut g = c.benchmark_group("quadratic_flatten_vs_lyon");
+    let peers = [
+        ("bezkit Method::Fast", Peer::Bezkit(Method::Fast)),
+        ("lyon_geom for_each_flattened", Peer::Lyon),
+    ];
     for seed in 1..=3_u64 {
         let curve = random_curve::<2>(2, 500 + seed);
-        let p = curve.points();
-        let lyon = QuadraticBezierSegment {
-            from: point(p[0].x(), p[0].y()),
-            ctrl: point(p[1].x(), p[1].y()),
-            to: point(p[2].x(), p[2].y()),
-        };
         for rel in [1e-3, 1e-5] {
             let tol = rel * bez_subdiv::curve_size(&curve);
-            let name = format!("quadratic {seed} at {rel:e}");
-            let fast = Flattener::new(tol).with_method(Method::Fast);
-            let mut points = Vec::new();
-            let Ok(segments) = fast.flatten(&curve, |q| points.push(q.point)) else {
-                continue;
-            };
-            let mut lyon_points = Vec::new();
-            lyon.for_each_flattened(tol, &mut |s| lyon_points.push(s.to));
-            assert_eq!(lyon_points.len(), segments, "{name}: lyon_geom's count");
-            g.throughput(Throughput::Elements(segments as u64));
-            g.bench_function(BenchmarkId::new("bezkit Method::Fast", &name), |b| {
-                b.iter(|| {
-                    points.clear();
-                    fast.flatten(black_box(&curve), |q| points.push(q.point))
-                });
-            });
-            g.bench_function(
-                BenchmarkId::new("lyon_geom for_each_flattened", &name),
-                |b| {
-                    b.iter(|| {
-                        lyon_points.clear();
-                        black_box(&lyon).for_each_flattened(tol, &mut |s| lyon_points.push(s.to));
-                        lyon_points.len()
-                    });
-                },
+            compare(
+                &mut g,
+                &format!("quadratic {seed} at {rel:e}"),
+                &curve,
+                tol,
+                &peers,
             );
         }
     }

@@ -9,7 +9,7 @@ use crate::guaranteed::{FlatPoint, stream_guaranteed};
 use crate::local_wang::stream_local_wang;
 use crate::optimal::flatten_optimal;
 use crate::split_rule::SplitRule;
-use crate::wang::flatten_wang;
+use crate::wang::{flatten_wang, flatten_wang_small};
 
 /// How a [`Flattener`] places its points. Every method but [`Method::PaperRule`] guarantees
 /// that the polyline is within the tolerance of the curve in Hausdorff distance.
@@ -17,7 +17,7 @@ use crate::wang::flatten_wang;
 /// | method | segments / N* (random cubics, tol = 1e-3 × size) | cost | use it for |
 /// |---|---|---|---|
 /// | [`Fast`](Method::Fast) | about 2 | fastest: no subdivision, a few flops per point (about 0.1 × kurbo's `flatten`) | rendering, hit testing, anything per frame |
-/// | [`Optimal`](Method::Optimal) | median 1.05, 90th percentile 1.10 | about kurbo's `flatten` on cubics (1.15–1.17 × its time on random cubics, 0.92–0.94 × on adversarial ones); about 0.2–0.3 µs per point at degree 25 | output that is stored or sent (fewest points) |
+/// | [`Optimal`](Method::Optimal) | median 1.05, 90th percentile 1.10 | about kurbo's `flatten` on cubics (1.12 × its time on random cubics, 0.89–0.91 × on adversarial ones); about 0.2–0.3 µs per point at degree 25 | output that is stored or sent (fewest points) |
 /// | [`LocalWang`](Method::LocalWang) | 1.6–2.0 | one halving per up to 16 points | high degrees |
 /// | [`Halving`](Method::Halving) | about 1.7 | one de Casteljau halving per segment | — |
 /// | [`PaperRule`](Method::PaperRule) | — | — | reproducing Ma, Lin & Shen's Table 1 only: **no guarantee** |
@@ -29,8 +29,11 @@ pub enum Method {
     /// points ([`wang_segment_count`](crate::wang_segment_count)): the chord of a parameter step h
     /// interpolates B within h²/8 · max|B″| and |B″| ≤ n(n − 1) M. lyon_geom's count for
     /// quadratics and cubics; no subdivision, no allocation; O(1) per point up to degree 3
-    /// (Horner on the power form), O(n) above. At most [`MAX_WANG_SEGMENTS`](crate::MAX_WANG_SEGMENTS)
-    /// segments, checked before the first point.
+    /// (the power form), O(n) above. At most [`MAX_WANG_SEGMENTS`](crate::MAX_WANG_SEGMENTS)
+    /// segments, checked before the first point. On quadratics and cubics needing at most 32
+    /// segments, N is read from a table of fourth powers (no square root); it rounds up, so it
+    /// is one more than the formula where the formula's value is within about 2⁻⁴⁸ of a whole
+    /// number.
     #[default]
     Fast,
     /// Wang's bound piece by piece: the curve is halved (de Casteljau at ½) until a piece needs
@@ -136,12 +139,20 @@ impl Flattener {
     /// estimated before the first point is above the method's limit, all checked before any
     /// point is sent; [`SubdivError::DepthLimit`] when a piece still fails at the depth cap
     /// (the points before it have been sent).
+    #[inline]
     pub fn flatten<C: BezierForm<2> + ?Sized>(
         &self,
         curve: &C,
         mut sink: impl FnMut(FlatPoint),
     ) -> Result<usize, SubdivError> {
         let bezier = curve.as_bezier();
+        // `Fast` on a quadratic or a cubic of usual size: no square root and no dynamic
+        // dispatch before the points (`None`, nothing sent, when the general path decides).
+        if let Method::Fast = self.method
+            && let Some(n) = flatten_wang_small(bezier.points(), self.tolerance, &mut sink)
+        {
+            return Ok(n);
+        }
         if let Some(exponent) = unit_exponent(bezier) {
             // Far from unit size, flatten the curve scaled by 2^−exponent (exact) with the
             // tolerance scaled alike, and scale the points back: the result is the scaled

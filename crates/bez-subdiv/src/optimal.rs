@@ -14,6 +14,9 @@ pub(crate) const MAX_OPTIMAL_SEGMENTS: usize = 1 << 20;
 const NODES_PER_WANG_STEP: f64 = 0.35;
 /// Most density cells of a curve of degree ≤ 3 (held in an array, no allocation).
 const MAX_CUBIC_CELLS: usize = 200;
+/// Up to this many cells (Wang's count up to about 90), the array is this short: zeroing the
+/// long one took about a seventh of the time of a random cubic at 1e-3 × size.
+const SHORT_CUBIC_CELLS: usize = 32;
 /// A step whose bound is below this fraction of the tolerance is tried once longer (0.9: the
 /// count on random cubics drops by about 1 %, for about 20 % more time than without).
 const EXTEND_BELOW: f64 = 0.9;
@@ -505,17 +508,7 @@ fn optimal_bezier(
         let cells = (wang * NODES_PER_WANG_STEP)
             .ceil()
             .clamp(1.0, MAX_CUBIC_CELLS as f64) as usize;
-        let mut nodes = [(0.0, 0.0); MAX_CUBIC_CELLS + 1];
-        for (j, node) in nodes.iter_mut().enumerate().take(cells + 1) {
-            let t = j as f64 / cells as f64;
-            *node = (t, power.density(t));
-        }
-        let bound = [PieceBound {
-            end: 1.0,
-            third: 6.0 * power.c.norm(),
-            fourth: 0.0,
-        }];
-        let mut march = March {
+        let march = March {
             eval: &power,
             sink,
             accept: tolerance - allowance,
@@ -526,10 +519,38 @@ fn optimal_bezier(
             last,
             jerk: Some(power.c * 6.0),
         };
-        place(&mut march, &nodes[..=cells], &bound, first, last)?;
-        return Ok(march.segments);
+        // The nodes live in an array of the call's stack frame; a short one when it suffices,
+        // since the whole array is zeroed on every call.
+        return if cells <= SHORT_CUBIC_CELLS {
+            march_power::<{ SHORT_CUBIC_CELLS + 1 }, _>(march, cells, first)
+        } else {
+            march_power::<{ MAX_CUBIC_CELLS + 1 }, _>(march, cells, first)
+        };
     }
     crate::model_march::march_models(p, tolerance - allowance, max_depth, sink)
+}
+
+/// The march of a curve of degree ≤ 3 over `cells` equal density cells (N > `cells`, the
+/// nodes held in an array of N entries); returns the number of segments.
+fn march_power<const N: usize, S: FnMut(FlatPoint)>(
+    mut march: March<'_, Power, S>,
+    cells: usize,
+    first: Jet,
+) -> Result<usize, SubdivError> {
+    let power = march.eval;
+    let mut nodes = [(0.0, 0.0); N];
+    for (j, node) in nodes.iter_mut().enumerate().take(cells + 1) {
+        let t = j as f64 / cells as f64;
+        *node = (t, power.density(t));
+    }
+    let bound = [PieceBound {
+        end: 1.0,
+        third: 6.0 * power.c.norm(),
+        fourth: 0.0,
+    }];
+    let last = march.last;
+    place(&mut march, &nodes[..=cells], &bound, first, last)?;
+    Ok(march.segments)
 }
 
 #[cfg(test)]

@@ -12,6 +12,166 @@ use crate::stack_horner::{STACK_POINTS, StackHorner};
 /// (below the rounding of the coordinates, in practice) is refused before any point is made.
 pub const MAX_WANG_SEGMENTS: usize = 1 << 24;
 
+/// The largest count that [`flatten_wang_small`] reads from [`FOURTH_POWERS`]; larger counts
+/// take the general path (two square roots, amortized over more than 32 points).
+const TABLE_COUNTS: usize = 32;
+
+/// i⁴ for i = 0..[`TABLE_COUNTS`] + 4, exact in f64, except entry 0, −1 (every q ≥ 0 is above
+/// it: the count is at least 1).
+const FOURTH_POWERS: [f64; TABLE_COUNTS + 4] = {
+    let mut table = [-1.0; TABLE_COUNTS + 4];
+    let mut i = 1;
+    while i < TABLE_COUNTS + 4 {
+        let k = i as f64;
+        table[i] = k * k * k * k;
+        i += 1;
+    }
+    table
+};
+
+/// 1/i for i = 0..=[`TABLE_COUNTS`] (entry 0 unused), each the correctly rounded quotient, as
+/// `1.0 / i as f64` at run time: the parameters k/N come out bit for bit as on the general path.
+const RECIPROCALS: [f64; TABLE_COUNTS + 1] = {
+    let mut table = [0.0; TABLE_COUNTS + 1];
+    let mut i = 1;
+    while i <= TABLE_COUNTS {
+        table[i] = 1.0 / i as f64;
+        i += 1;
+    }
+    table
+};
+
+/// 1 + 2⁻⁴⁶: the factor by which [`table_count`] enlarges the computed fourth power of Wang's
+/// count before comparing it with the table (see there).
+const ROUND_UP: f64 = 1.0 + 1.0 / (1_u64 << 46) as f64;
+
+/// Wang's count N = max(1, ⌈q^¼⌉) from `q`, its fourth power as computed, without a square
+/// root: [`count_from_fourth_power`] of q (1 + 2⁻⁴⁶). `None` when that is above
+/// [`TABLE_COUNTS`] or `q` is not a number.
+///
+/// Conservative, so the guarantee of Wang's count holds: let Q = (c |d| / tol)² be the exact
+/// fourth power for the second difference d as computed (c = n(n − 1)/8). The caller computes
+/// q = fl(‖fl(d · fl(c / tol))‖²) in six rounding steps at most (the quotient, one product per
+/// coordinate, one square each and their sum; for a cubic the larger of two such sums), each
+/// within a relative 2⁻⁵³ while no step underflows, so q ≥ Q (1 − 2⁻⁵⁰). The product with
+/// 1 + 2⁻⁴⁶ rounds within another 2⁻⁵³, and (1 − 2⁻⁵⁰)(1 + 2⁻⁴⁶)(1 − 2⁻⁵³) > 1: the enlarged q
+/// is above Q, so the count i found has i⁴ ≥ Q, i ≥ ⌈Q^¼⌉. Underflow only adds an absolute
+/// error below 2⁻⁹⁰⁰ to a Q itself below 1, where every count i ≥ 1 is enough. The count
+/// therefore never rounds down; it is one above the square-root formula ([`wang_count`],
+/// ⌈√(c |d| / tol)⌉) only when that formula's unrounded value lies within about 2⁻⁴⁸ of a whole
+/// number (tested, with exact integer arithmetic as the oracle).
+#[inline(always)]
+pub(crate) fn table_count(q: f64) -> Option<usize> {
+    let q = q.abs() * ROUND_UP;
+    if q.is_nan() || q > FOURTH_POWERS[TABLE_COUNTS] {
+        return None;
+    }
+    Some(count_from_fourth_power(q))
+}
+
+/// 3 · 1023 · 2⁵⁰: with it, the bits of q shifted right by two are the bits of an estimate y of
+/// q^¼ (the exponent divided by 4, the mantissa in between), y = 1 at q = 1.
+const QUARTER_ROOT_BIAS: u64 = (3 * 1023) << 50;
+
+/// The smallest i ≥ 1 with q ≤ i⁴, for 0 ≤ q ≤ [`TABLE_COUNTS`]⁴, without a search or a
+/// data-dependent branch: a first guess b from the bits of q (see [`QUARTER_ROOT_BIAS`];
+/// b = ⌊0.94 y⌋, y ≥ q^¼ ≥ 0.94 y for positive normal q), then b plus the number of i⁴ among
+/// b⁴, …, (b + 3)⁴ that q exceeds ([`FOURTH_POWERS`]), which is the count whenever
+/// b ≤ count ≤ b + 4. That holds on all of [0, [`TABLE_COUNTS`]⁴]: b is a non-decreasing
+/// function of q (the bits of a non-negative f64 grow with it, and every later step is
+/// monotone), so on each interval ((i − 1)⁴, i⁴] of count i it is enough that b ≤ i at its top
+/// and b ≥ i − 4 just above its bottom, which a test checks for every i.
+#[inline(always)]
+fn count_from_fourth_power(q: f64) -> usize {
+    let base = first_guess(q);
+    base + (0..4)
+        .map(|j| usize::from(q > FOURTH_POWERS[base + j]))
+        .sum::<usize>()
+}
+
+/// ⌊0.94 y⌋ for the estimate y of q^¼ of [`QUARTER_ROOT_BIAS`], at most [`TABLE_COUNTS`] − 1.
+#[inline(always)]
+fn first_guess(q: f64) -> usize {
+    let y = f64::from_bits((q.to_bits() >> 2) + QUARTER_ROOT_BIAS);
+    // Saturating conversion; the bound keeps the indices in the table for any input.
+    #[allow(
+        clippy::cast_possible_truncation,
+        clippy::cast_sign_loss,
+        reason = "0 ≤ 0.94 y < 32 on the range, saturating outside"
+    )]
+    let base = (0.94 * y) as usize;
+    base.min(TABLE_COUNTS - 1)
+}
+
+/// 2^±128: [`flatten_wang_small`] runs where the largest coordinate is surely within the range
+/// inside which `Flattener` does not rescale the curve (the same bounds).
+const UNIT_LOW: f64 = 1.0 / UNIT_HIGH;
+const UNIT_HIGH: f64 = 340_282_366_920_938_463_463_374_607_431_768_211_456.0;
+
+/// Whether the sum s of the absolute coordinates of `points` lies in [2k · 2⁻¹²⁸, 2¹²⁸]
+/// (k points): then the largest coordinate m, with s / 2k ≤ m ≤ s, lies within 2^±128, the
+/// range in which `Flattener` flattens a curve as it is. One sum and one range test instead of
+/// a maximum (a NaN or infinite coordinate fails it too).
+#[inline(always)]
+fn surely_unit_size<const K: usize>(points: &[Vector2; K]) -> bool {
+    let sum = points.iter().fold(Vector2::zeros(), |acc, p| acc + p.abs());
+    (2.0 * K as f64 * UNIT_LOW..=UNIT_HIGH).contains(&(sum.x() + sum.y()))
+}
+
+/// `Method::Fast` on a quadratic or a cubic without a square root or a data-dependent branch
+/// before the points: Wang's count from [`table_count`] (q = (n(n − 1)/8 · |d| / tol)²
+/// with d the largest second difference), the step 1/N from [`RECIPROCALS`], then Horner's
+/// rule on the power form relative to P₀. Returns `None` before sending any point when the
+/// curve is not a quadratic or a cubic, the tolerance is not a normal positive number, the
+/// curve is not surely of unit size ([`surely_unit_size`]) or the count is above
+/// [`TABLE_COUNTS`]: [`flatten_wang`] then decides (the same points, up to a count one higher
+/// here at exact boundaries, see [`table_count`]).
+#[inline(always)]
+pub(crate) fn flatten_wang_small(
+    points: &[Vector2],
+    tolerance: f64,
+    sink: impl FnMut(FlatPoint),
+) -> Option<usize> {
+    if !(f64::MIN_POSITIVE..=f64::MAX).contains(&tolerance) {
+        return None;
+    }
+    match *points {
+        [p0, p1, p2] => {
+            if !surely_unit_size(&[p0, p1, p2]) {
+                return None;
+            }
+            // B(t) = P₀ + t (a + t d), a = 2(P₁ − P₀), d = P₀ − 2P₁ + P₂; n(n − 1)/8 = 1/4.
+            let d = p0 - p1 * 2.0 + p2;
+            let n = table_count((d * (0.25 / tolerance)).norm_squared())?;
+            let a = (p1 - p0) * 2.0;
+            Some(uniform(
+                n,
+                RECIPROCALS[n],
+                p0,
+                p2,
+                |t| p0 + (a + d * t) * t,
+                sink,
+            ))
+        }
+        [p0, p1, p2, p3] => {
+            if !surely_unit_size(&[p0, p1, p2, p3]) {
+                return None;
+            }
+            // B(t) = P₀ + t (a + t (b + t c)), a = 3(P₁ − P₀), b = 3 d₀, c = d₁ − d₀ with the
+            // second differences d₀ = P₀ − 2P₁ + P₂, d₁ = P₁ − 2P₂ + P₃; n(n − 1)/8 = 3/4.
+            let (d0, d1) = (p0 - p1 * 2.0 + p2, p1 - p2 * 2.0 + p3);
+            let k = 0.75 / tolerance;
+            let (q0, q1) = ((d0 * k).norm_squared(), (d1 * k).norm_squared());
+            let n = table_count(if q0 > q1 { q0 } else { q1 })?;
+            let (a, b, c) = ((p1 - p0) * 3.0, d0 * 3.0, d1 - d0);
+            // (P₀ + a t) + (b + c t) t²: two short chains instead of Horner's one long one.
+            let eval = |t: f64| (p0 + a * t) + (b + c * t) * (t * t);
+            Some(uniform(n, RECIPROCALS[n], p0, p3, eval, sink))
+        }
+        _ => None,
+    }
+}
+
 /// Streams the points B(k/N), k = 0..=N, of Wang's uniform flattening to `sink` and returns
 /// N, the number of segments: the polyline is within `tolerance` (absolute) of the curve in
 /// Hausdorff distance.
@@ -55,13 +215,21 @@ pub(crate) fn flatten_wang<C: BezierForm<2> + ?Sized>(
     match *p {
         [p0, p1] => {
             let a = p1 - p0;
-            Ok(uniform(count(&[p0, p1])?, p0, p1, |t| p0 + a * t, sink))
+            let n = count(&[p0, p1])?;
+            Ok(uniform(n, 1.0 / n as f64, p0, p1, |t| p0 + a * t, sink))
         }
         [p0, p1, p2] => {
             // B(t) = P₀ + t (a + t b), a = 2(P₁ − P₀), b = P₂ − 2P₁ + P₀.
             let (a, b) = ((p1 - p0) * 2.0, p2 - p1 * 2.0 + p0);
             let n = count(&[p0, p1, p2])?;
-            Ok(uniform(n, p0, p2, |t| p0 + (a + b * t) * t, sink))
+            Ok(uniform(
+                n,
+                1.0 / n as f64,
+                p0,
+                p2,
+                |t| p0 + (a + b * t) * t,
+                sink,
+            ))
         }
         [p0, p1, p2, p3] => {
             // B(t) = P₀ + t (a + t (b + t c)), a = 3(P₁ − P₀), b = 3(P₂ − 2P₁ + P₀),
@@ -70,7 +238,14 @@ pub(crate) fn flatten_wang<C: BezierForm<2> + ?Sized>(
             let b = (p2 - p1 * 2.0 + p0) * 3.0;
             let c = p3 - p2 * 3.0 + p1 * 3.0 - p0;
             let n = count(&[p0, p1, p2, p3])?;
-            Ok(uniform(n, p0, p3, |t| p0 + (a + (b + c * t) * t) * t, sink))
+            Ok(uniform(
+                n,
+                1.0 / n as f64,
+                p0,
+                p3,
+                |t| p0 + (a + (b + c * t) * t) * t,
+                sink,
+            ))
         }
         _ => {
             let n = count(p)?;
@@ -78,32 +253,44 @@ pub(crate) fn flatten_wang<C: BezierForm<2> + ?Sized>(
             // Up to `MAX_STACK_DEGREE` the scaled control points sit in the stack frame.
             let mut buffer = [Vector2::zeros(); STACK_POINTS];
             if let Some(horner) = StackHorner::new(p, &mut buffer) {
-                return Ok(uniform(n, first, last, |t| horner.eval(t), sink));
+                return Ok(uniform(
+                    n,
+                    1.0 / n as f64,
+                    first,
+                    last,
+                    |t| horner.eval(t),
+                    sink,
+                ));
             }
             let horner = HornerBernstein::new(p);
             // `None` only for an empty polygon, excluded above.
             let eval = |t: f64| horner.eval(t).unwrap_or(first);
-            Ok(uniform(n, first, last, eval, sink))
+            Ok(uniform(n, 1.0 / n as f64, first, last, eval, sink))
         }
     }
 }
 
-/// Sends `first`, the points `eval`(k/n) for k = 1..n and `last` to `sink`; returns n.
+/// Sends `first`, the points `eval`(k · `step`) for k = 1..n and `last` to `sink`; returns n.
+/// `step` is 1/n, as computed by `1.0 / n as f64`.
 #[inline(always)]
 fn uniform(
     n: usize,
+    step: f64,
     first: Vector2,
     last: Vector2,
     eval: impl Fn(f64) -> Vector2,
     mut sink: impl FnMut(FlatPoint),
 ) -> usize {
-    let step = 1.0 / n as f64;
     sink(FlatPoint {
         t: 0.0,
         point: first,
     });
-    for k in 1..n {
-        let t = k as f64 * step;
+    // k counted in f64 (exact below 2⁵³): the same t = k · step as from the integer, without
+    // a conversion per point.
+    let mut k = 0.0;
+    for _ in 1..n {
+        k += 1.0;
+        let t = k * step;
         sink(FlatPoint { t, point: eval(t) });
     }
     sink(FlatPoint {
@@ -137,6 +324,8 @@ mod tests {
             prop_assert_eq!(pts[0].point, c.start());
             prop_assert_eq!(pts[n].point, c.end());
             prop_assert!(pts.windows(2).all(|w| w[0].t < w[1].t));
+            // The public path (the table count on quadratics and cubics) gives the same count.
+            prop_assert_eq!(crate::Flattener::new(tol).flatten(&c, |_| {}), Ok(n));
             let poly: Vec<Vector2> = pts.iter().map(|p| p.point).collect();
             let sampling = HausdorffSampling { curve_samples: 2001, segment_samples: 3 };
             let h = measured_hausdorff(&c, &poly, sampling).unwrap();
@@ -145,6 +334,217 @@ mod tests {
             for p in &pts {
                 prop_assert!((p.point - c.eval(p.t).unwrap()).norm() <= 1e-12 * (1.0 + crate::curve_size(&c)));
             }
+        }
+    }
+
+    /// Splitmix64: a seeded stream of u64 for the table tests.
+    fn stream(mut state: u64) -> impl FnMut() -> u64 {
+        move || {
+            state = state.wrapping_add(0x9E37_79B9_7F4A_7C15);
+            let mut z = state;
+            z = (z ^ (z >> 30)).wrapping_mul(0xBF58_476D_1CE4_E5B9);
+            z = (z ^ (z >> 27)).wrapping_mul(0x94D0_49BB_1331_11EB);
+            z ^ (z >> 31)
+        }
+    }
+
+    /// The count `Method::Fast` sends on the table path (`None` when it falls back).
+    fn small_count(points: &[Vector2], tol: f64) -> Option<usize> {
+        let mut sent = 0;
+        let n = flatten_wang_small(points, tol, |_| sent += 1)?;
+        assert_eq!(sent, n + 1);
+        Some(n)
+    }
+
+    /// The first guess of `count_from_fourth_power` is within [i − 4, i] at both ends of the
+    /// interval ((i − 1)⁴, i⁴] of every count i (so everywhere, by its monotonicity), and the
+    /// count is the smallest i with q ≤ i⁴ on a dense sweep of [0, 32⁴].
+    #[test]
+    fn count_from_fourth_power_is_exact_on_its_range() {
+        for i in 1..=TABLE_COUNTS {
+            let top = (i as f64).powi(4);
+            let bottom = if i == 1 {
+                0.0
+            } else {
+                ((i - 1) as f64).powi(4).next_up()
+            };
+            assert!(first_guess(top) <= i, "{i}");
+            assert!(first_guess(bottom) + 4 >= i, "{i}");
+            assert_eq!(count_from_fourth_power(top), i);
+            assert_eq!(count_from_fourth_power(bottom), i);
+        }
+        let naive = |q: f64| {
+            (1..)
+                .find(|&i: &usize| q <= (i as f64).powi(4))
+                .unwrap_or(0)
+        };
+        let limit = (TABLE_COUNTS as f64).powi(4);
+        for k in 0..=200_000 {
+            let q = limit * (f64::from(k) / 200_000.0).powi(4);
+            assert_eq!(count_from_fourth_power(q), naive(q), "{q}");
+        }
+        assert_eq!(count_from_fourth_power(f64::from_bits(1)), 1);
+        assert_eq!(table_count(limit * 1.000_001), None);
+        assert_eq!(table_count(f64::NAN), None);
+    }
+
+    /// Exact oracle: integer control points (so the second differences are exact) and
+    /// tol = `num` / 2^`shift`. Wang's fourth power Q = (c |d| / tol)², c = n(n − 1)/8, is at
+    /// most i⁴ iff `weight` |d|² 4^shift ≤ 16 i⁴ num² (weight 1 for quadratics, 9 for cubics),
+    /// in u128. Returns the least i ≥ 1 that passes.
+    fn exact_count(d2: u128, weight: u128, num: u128, shift: u32) -> usize {
+        let lhs = (weight * d2) << (2 * shift);
+        (1..)
+            .find(|&i: &u128| lhs <= 16 * i.pow(4) * num * num)
+            .map_or(0, |i| i as usize)
+    }
+
+    /// The table count never rounds down against exact integer arithmetic, and rounds up by
+    /// at most one, only at exact boundaries; on quadratics and cubics with integer control
+    /// points, exact boundaries (Q = i⁴) and their neighbours included.
+    #[test]
+    fn table_count_is_the_exact_ceiling_or_one_more_at_a_boundary() {
+        let mut next = stream(15);
+        let mut boundaries = 0;
+        for case in 0..20_000 {
+            let shift = (next() % 12) as u32;
+            let num = u128::from(next() % 4096 + 1);
+            let tol = num as f64 / f64::from(1_u32 << shift);
+            let cubic = case % 2 == 1;
+            let weight = if cubic { 9 } else { 1 };
+            // Second differences: random, or on a boundary Q = i⁴ (|d|² = 16 i⁴ num² / (weight 4^shift)
+            // when that is a whole square), or one off it.
+            let (dx, dy, boundary) = if case % 4 < 2 {
+                let r = |v: u64| (v % 2001) as i64 - 1000;
+                (r(next()), r(next()), false)
+            } else {
+                // |d| = 4 i² num / (√weight 2^shift) along x, when whole.
+                let i = (next() % 32 + 1) as i64;
+                let root = if cubic { 3 } else { 1 };
+                let top = 4 * i * i * num as i64;
+                let bottom = root << shift;
+                if top % bottom != 0 {
+                    continue;
+                }
+                let offset = (next() % 3) as i64 - 1;
+                boundaries += usize::from(offset == 0);
+                (top / bottom + offset, 0, offset == 0)
+            };
+            let d = Vector2::new(dx as f64, dy as f64);
+            let d2 = (dx * dx + dy * dy) as u128;
+            let o = Vector2::new(3.0, -2.0);
+            // P₀ = o, P₁ = o + e, P₂ = o + 2e + d: the second difference d (exact in f64).
+            let e = Vector2::new(5.0, 7.0);
+            let points: Vec<Vector2> = if cubic {
+                // Second differences d and 0 (P₃ = 2P₂ − P₁).
+                let p2 = o + e * 2.0 + d;
+                vec![o, o + e, p2, p2 * 2.0 - (o + e)]
+            } else {
+                vec![o, o + e, o + e * 2.0 + d]
+            };
+            let exact = exact_count(d2, weight, num, shift);
+            match small_count(&points, tol) {
+                Some(n) => {
+                    assert!(
+                        n == exact || n == exact + 1,
+                        "{points:?} at {tol}: {n} vs {exact}"
+                    );
+                    // On a boundary (Q = exact⁴) the count rounds up.
+                    assert!(!boundary || n == exact + 1, "{points:?} at {tol}");
+                    if n == exact + 1 {
+                        // Only where Q is within 2⁻⁴⁰ of exact⁴.
+                        let q = (weight * d2) as f64 * 4f64.powi(shift as i32)
+                            / (16.0 * (num * num) as f64);
+                        assert!((q / (exact as f64).powi(4) - 1.0).abs() < 1e-12, "{q}");
+                    }
+                    // Against the square-root formula: never below it, at most one above.
+                    let sqrt = wang_count(&points, tol).unwrap();
+                    assert!(n == sqrt || n == sqrt + 1, "{n} vs {sqrt}");
+                }
+                None => assert!(exact >= TABLE_COUNTS, "{points:?} at {tol}: {exact}"),
+            }
+        }
+        assert!(boundaries > 300, "{boundaries}");
+    }
+
+    /// On random quadratics and cubics at random tolerances the table count is the
+    /// square-root formula's, except within 1e-12 of a whole number, where it may be one more.
+    #[test]
+    fn table_count_matches_the_square_root_formula() {
+        let mut next = stream(2026);
+        let mut unit = || (next() >> 11) as f64 / (1_u64 << 53) as f64;
+        let mut table = 0;
+        for case in 0..20_000 {
+            let len = 3 + case % 2;
+            let scale = 10f64.powf(6.0 * unit() - 3.0);
+            let points: Vec<Vector2> = (0..len)
+                .map(|_| Vector2::new(unit() - 0.5, unit() - 0.5) * scale)
+                .collect();
+            let tol = scale * 10f64.powf(-4.0 * unit());
+            let sqrt = wang_count(&points, tol).unwrap();
+            let Some(n) = small_count(&points, tol) else {
+                assert!(sqrt >= TABLE_COUNTS, "{sqrt}");
+                continue;
+            };
+            table += 1;
+            let steps = crate::bound::wang_steps(&points, tol);
+            if (steps - steps.round()).abs() > 1e-12 * steps {
+                assert_eq!(n, sqrt, "{points:?} at {tol}");
+            } else {
+                assert!(n == sqrt || n == sqrt + 1);
+            }
+        }
+        assert!(table > 5_000, "{table}");
+    }
+
+    /// The table path's points: those of the general path up to rounding, the same count,
+    /// the same parameters bit for bit; and it declines what the general path must decide.
+    #[test]
+    fn table_path_agrees_with_the_general_path() {
+        let mut next = stream(7);
+        let mut unit = || (next() >> 11) as f64 / (1_u64 << 53) as f64;
+        for case in 0..2_000 {
+            let points: Vec<Vector2> = (0..3 + case % 2)
+                .map(|_| Vector2::new(unit(), unit()))
+                .collect();
+            let tol = 10f64.powf(-1.0 - 3.0 * unit());
+            let mut fast = Vec::new();
+            let Some(n) = flatten_wang_small(&points, tol, |p| fast.push(p)) else {
+                continue;
+            };
+            let curve = BezierCurve::new(points.clone()).unwrap();
+            let mut general = Vec::new();
+            assert_eq!(flatten_wang(&curve, tol, |p| general.push(p)), Ok(n));
+            for (f, g) in fast.iter().zip(&general) {
+                assert_eq!(f.t, g.t);
+                assert!((f.point - g.point).norm() <= 1e-13, "{f:?} vs {g:?}");
+            }
+        }
+        let q = [
+            Vector2::new(0.0, 0.0),
+            Vector2::new(1.0, 4.0),
+            Vector2::new(2.0, 0.0),
+        ];
+        let huge = q.map(|p| p * 1e50);
+        let tiny = q.map(|p| p * 1e-50);
+        let zero = [Vector2::zeros(); 3];
+        for (points, tol) in [
+            (&q[..], 1e-9), // more than 32 segments
+            (&q[..], 0.0),  // invalid tolerances
+            (&q[..], f64::NAN),
+            (&q[..], f64::INFINITY),
+            (&q[..], -1.0),
+            (&q[..], 1e-310),  // subnormal
+            (&q[..2], 1.0),    // a line
+            (&huge[..], 1e49), // not of unit size
+            (&tiny[..], 1e-51),
+            (&zero[..], 1.0),
+        ] {
+            assert_eq!(
+                flatten_wang_small(points, tol, |_| panic!("sent")),
+                None,
+                "{points:?}"
+            );
         }
     }
 

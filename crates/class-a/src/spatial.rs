@@ -200,12 +200,7 @@ impl Setup {
 
     /// Residual: unit(Σ) − unit(chord), a 3-vector (2 independent components).
     fn residual(&self, phi: f64, log_s: f64, k: i64) -> Vector3 {
-        self.branch_residual(&self.branch(phi, k), log_s)
-    }
-
-    /// [`Setup::residual`] on a rotation already formed (Newton's steps in log s share it).
-    fn branch_residual(&self, b: &Branch, log_s: f64) -> Vector3 {
-        let sum = self.scaled_sum(b, log_s);
+        let sum = self.scaled_sum(&self.branch(phi, k), log_s);
         let c = self.unit_chord;
         let n = sum.norm();
         if n.is_finite() && n > 0.0 {
@@ -213,6 +208,86 @@ impl Setup {
         } else {
             Vector3::repeat(f64::INFINITY)
         }
+    }
+
+    /// The residual r = unit(Σ) − ĉ of [`Setup::residual`] and its partial derivatives
+    /// (∂r/∂φ, ∂r/∂log s) in closed form, for Newton's steps.
+    ///
+    /// With Σ = a·R·u + Re(C)·p + Im(C)·q (a = u·v₀, p = v₀ − a u, q = u × v₀,
+    /// R = Σ_j e^{(j−J)λ}, C = Σ_j e^{(j−J)λ} e^{ijθ}, λ = log s, J = 0 for λ ≤ 0 and n − 1
+    /// above, the scaling of [`Setup::scaled_sum`]):
+    ///
+    /// * ∂R/∂λ = Σ (j − J) e^{(j−J)λ} =: R', ∂C/∂λ = Σ (j − J) e^{(j−J)λ} e^{ijθ} =: C' and
+    ///   ∂C/∂θ = i(C' + J C);
+    /// * u(φ) = N cos φ + B sin φ (eq. (14)), u' = −N sin φ + B cos φ; since u·v₀ = u·v₁ = a, the
+    ///   turn is ψ = atan2(u·(v₀ × v₁), v₀·v₁ − a²), so ψ' = (x y' − y x')/(x² + y²) with
+    ///   y = u·(v₀ × v₁), x = v₀·v₁ − a², y' = u'·(v₀ × v₁), x' = −2a a', a' = u'·v₀, and
+    ///   θ' = ψ'/(n − 1); p' = −a'u − a u', q' = u' × v₀;
+    /// * the unit vector's derivative is (I − ûûᵀ) Σ' / |Σ| (û = Σ/|Σ|), so the scale factor
+    ///   e^{−Jλ} of Σ drops out.
+    ///
+    /// Tested against central differences of [`Setup::residual`].
+    fn residual_jacobian(&self, phi: f64, log_s: f64, k: i64) -> (Vector3, Vector3, Vector3) {
+        let b = self.branch(phi, k);
+        let n = self.n;
+        let u = b.axis;
+        let (sin_phi, cos_phi) = phi.sin_cos();
+        let du = self.bisector * cos_phi - self.normal * sin_phi;
+        let a = u.dot(&self.v0);
+        let da = du.dot(&self.v0);
+        let p = self.v0 - u * a;
+        let q = u.cross(&self.v0);
+        let w = self.v0.cross(&self.v1);
+        let (y, x) = (u.dot(&w), self.v0.dot(&self.v1) - a * a);
+        let (dy, dx) = (du.dot(&w), -2.0 * a * da);
+        let dtheta = (x * dy - y * dx) / (x * x + y * y) / (n - 1) as f64;
+        let dp = -(u * da + du * a);
+        let dq = du.cross(&self.v0);
+        // Term by term from the largest term 1 (j = J) down: e^{−m|λ|} e^{±imθ}, m = |j − J|.
+        let (r, sign) = if log_s <= 0.0 {
+            ((log_s).exp(), 1.0)
+        } else {
+            ((-log_s).exp(), -1.0)
+        };
+        let ratio = Complex::from_polar(r, sign * b.theta);
+        let (mut real, mut dreal) = (0.0, 0.0);
+        let (mut c, mut dc) = (Complex::new(0.0, 0.0), Complex::new(0.0, 0.0));
+        let (mut power, mut real_power) = (Complex::new(1.0, 0.0), 1.0);
+        for m in 0..n {
+            let mf = m as f64;
+            real += real_power;
+            dreal += mf * real_power;
+            c += power;
+            dc += power * mf;
+            real_power *= r;
+            power *= ratio;
+        }
+        let big_j = if log_s <= 0.0 {
+            0.0
+        } else {
+            // j − J = −m and e^{ijθ} = e^{i(n−1)θ} e^{−imθ}.
+            let turn = Complex::from_polar(1.0, b.theta * (n - 1) as f64);
+            c *= turn;
+            dc *= -turn;
+            dreal = -dreal;
+            (n - 1) as f64
+        };
+        let dc_theta = Complex::new(0.0, 1.0) * (dc + c * big_j);
+        let sum = u * (a * real) + p * c.re + q * c.im;
+        let d_ls = u * (a * dreal) + p * dc.re + q * dc.im;
+        let d_phi = u * (da * real)
+            + du * (a * real)
+            + dp * c.re
+            + dq * c.im
+            + (p * dc_theta.re + q * dc_theta.im) * dtheta;
+        let norm = sum.norm();
+        if !(norm.is_finite() && norm > 0.0) {
+            let bad = Vector3::repeat(f64::INFINITY);
+            return (bad, bad, bad);
+        }
+        let unit = sum / norm;
+        let project = |d: Vector3| (d - unit * unit.dot(&d)) / norm;
+        (unit - self.unit_chord, project(d_phi), project(d_ls))
     }
 
     /// The frame components of Σ along one grid row (fixed φ and k), for every grid column:
@@ -893,27 +968,23 @@ fn local_minima(errors: &[f64], np: usize, ns: usize, thetas: &[f64]) -> Vec<(us
         .collect()
 }
 
-/// Damped Newton (Gauss–Newton with backtracking) on the residual in (φ, log s) on branch k;
-/// φ is free (the branch is continuous in φ).
+/// Damped Newton (Gauss–Newton with backtracking) on the residual in (φ, log s) on branch k,
+/// with the Jacobian in closed form ([`Setup::residual_jacobian`]); φ is free (the branch is
+/// continuous in φ).
 fn newton(setup: &Setup, mut phi: f64, mut ls: f64, k: i64) -> (f64, f64, f64) {
     let max_ls = 700.0 / (setup.n - 1) as f64;
-    let mut r = setup.residual(phi, ls, k);
+    let mut rn = setup.residual(phi, ls, k).norm();
     for iteration in 0..60 {
-        let rn = r.norm();
         // Converged, or (after a dozen steps still far off) not in a solution's basin.
         if rn <= 1e-15 || !rn.is_finite() || (iteration >= 10 && rn > 1e-3) {
             break;
         }
-        let h = 1e-7;
-        let jp = (setup.residual(phi + h, ls, k) - setup.residual(phi - h, ls, k)) / (2.0 * h);
-        let here = setup.branch(phi, k);
-        let js = (setup.branch_residual(&here, ls + h) - setup.branch_residual(&here, ls - h))
-            / (2.0 * h);
+        let (r, jp, js) = setup.residual_jacobian(phi, ls, k);
         // Normal equations of the 3×2 least-squares step.
         let (a, b, c) = (jp.dot(&jp), jp.dot(&js), js.dot(&js));
         let (g0, g1) = (jp.dot(&r), js.dot(&r));
         let det = a * c - b * b;
-        if det.abs() <= 1e-300 || det.is_nan() {
+        if det.abs() <= 1e-300 || !det.is_finite() {
             break;
         }
         let dp = -(c * g0 - b * g1) / det;
@@ -923,11 +994,11 @@ fn newton(setup: &Setup, mut phi: f64, mut ls: f64, k: i64) -> (f64, f64, f64) {
         for _ in 0..30 {
             let (np, ns) = (phi + step * dp, ls + step * ds);
             if ns.abs() < max_ls && np.is_finite() {
-                let nr = setup.residual(np, ns, k);
-                if nr.norm() < rn {
+                let nr = setup.residual(np, ns, k).norm();
+                if nr < rn {
                     phi = np;
                     ls = ns;
-                    r = nr;
+                    rn = nr;
                     improved = true;
                     break;
                 }
@@ -938,12 +1009,68 @@ fn newton(setup: &Setup, mut phi: f64, mut ls: f64, k: i64) -> (f64, f64, f64) {
             break;
         }
     }
-    (phi, ls, r.norm())
+    (phi, ls, rn)
 }
 
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    /// The closed-form Jacobian of the direction residual against central differences, on
+    /// every branch, both signs of log s, low and high degree.
+    #[test]
+    fn residual_jacobian_matches_central_differences() {
+        // The residual from the rotation matrices themselves, Σ_j sʲ R(u, θ)ʲ v₀ with the axis
+        // of eq. (14) and θ of `turn_about`, without the closed
+        // forms (an independent evaluation).
+        fn explicit(setup: &Setup, phi: f64, ls: f64, k: i64) -> Vector3 {
+            let b = setup.branch(phi, k);
+            let m = rotation(&b.axis, b.theta) * ls.exp();
+            let (mut sum, mut leg) = (Vector3::zeros(), setup.v0);
+            for _ in 0..setup.n {
+                sum += leg;
+                leg = m * leg;
+            }
+            sum / sum.norm() - setup.unit_chord
+        }
+        let a = [
+            Vector3::new(0.0, 0.0, 0.0),
+            Vector3::new(1.0, 0.0, 0.2),
+            Vector3::new(6.21, 6.54, 1.79),
+            Vector3::new(6.12, 9.44, 2.73),
+        ];
+        let h = 1e-7;
+        let mut checked = 0;
+        for n in [3, 4, 7, 20, 45] {
+            let setup = Setup::new(&a, n).unwrap();
+            for k in setup.branches() {
+                for phi in [-1.4, -0.6, 0.0, 0.45, 1.3] {
+                    for ls in [-0.9, -0.2, 0.0, 0.15, 0.7] {
+                        let (r, jp, js) = setup.residual_jacobian(phi, ls, k);
+                        let direct = setup.residual(phi, ls, k);
+                        // Term by term against the closed form of `geometric_sums` from degree 32.
+                        assert!(
+                            (r - direct).norm() <= 1e-11,
+                            "n {n} k {k} phi {phi} ls {ls}: {r:?} {direct:?}"
+                        );
+                        // Fourth-order central differences.
+                        let diff = |f: &dyn Fn(f64) -> Vector3| {
+                            ((f(h) - f(-h)) * 8.0 - (f(2.0 * h) - f(-2.0 * h))) / (12.0 * h)
+                        };
+                        let fp = diff(&|d| explicit(&setup, phi + d, ls, k));
+                        let fs = diff(&|d| explicit(&setup, phi, ls + d, k));
+                        let scale = 1.0 + fp.norm() + fs.norm();
+                        assert!(
+                            (jp - fp).norm() <= 1e-6 * scale && (js - fs).norm() <= 1e-6 * scale,
+                            "n {n} k {k} phi {phi} ls {ls}: {jp:?} {fp:?} / {js:?} {fs:?}"
+                        );
+                        checked += 1;
+                    }
+                }
+            }
+        }
+        assert!(checked > 500, "{checked}");
+    }
 
     /// The grid rows (shared columns, closed form from degree 4) agree with the term-by-term
     /// [`Setup::scaled_sum`] at every node, including the nodes next to q = 1.

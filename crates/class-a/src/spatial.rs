@@ -114,6 +114,19 @@ struct Branch {
     theta: f64,
 }
 
+/// The parts of a grid row at φ shared by every branch: a = u·v₀ and the frame components of
+/// u, p = v₀ − a u and q = u × p ([`Setup::row_conditions`]), the turn ψ(φ) ∈ (0, 2π) and
+/// e^{iψ} (= e^{i(n−1)θ} on every branch).
+#[derive(Debug, Clone, Copy)]
+struct RowBase {
+    a: f64,
+    fu: [f64; 3],
+    fp: [f64; 3],
+    fq: [f64; 3],
+    psi: f64,
+    turn: Complex<f64>,
+}
+
 /// One grid column log s of the Newton-start grid, with the quantities every row shares:
 /// r = e^{−|log s|}, rⁿ and Σ_{j<n} rʲ.
 #[derive(Debug, Clone, Copy, Default)]
@@ -290,28 +303,50 @@ impl Setup {
         (unit - self.unit_chord, project(d_phi), project(d_ls))
     }
 
-    /// The frame components of Σ along one grid row (fixed φ and k), for every grid column:
-    /// (Σ·e₁, Σ·e₂, Σ·ĉ) for an orthonormal frame (e₁, e₂, ĉ) with ĉ the chord direction (Σ
-    /// divided by max(1, s)ⁿ⁻¹, as in [`Setup::scaled_sum`]). Smooth in (φ, log s); Σ ∥ chord
-    /// with the same sense iff the first two vanish and the third is positive. The row's frame
-    /// products and e^{±iθ} are formed once; the columns' sums Σ (r e^{±iθ})ʲ advance together
-    /// (independent chains the processor overlaps), each term by term in the order of
-    /// [`geometric_sums`].
-    fn row_conditions(
-        &self,
-        b: &Branch,
-        columns: &[Column; GRID.1],
-        frame: &[Vector3; 3],
-        out: &mut [[f64; 3]],
-    ) {
-        let u = b.axis;
+    /// The parts of a grid row at φ that every branch k shares ([`RowBase`]); ψ(φ) exactly as
+    /// in [`Setup::branch`].
+    fn row_base(&self, phi: f64, frame: &[Vector3; 3]) -> RowBase {
+        let u = self.normal * phi.cos() + self.bisector * phi.sin();
         let a = u.dot(&self.v0);
         let p = self.v0 - u * a;
         let q = u.cross(&p);
+        let p1 = self.v1 - u * u.dot(&self.v1);
+        let (y, x) = (u.dot(&p.cross(&p1)), p.dot(&p1));
         let along = |v: &Vector3| [v.dot(&frame[0]), v.dot(&frame[1]), v.dot(&frame[2])];
-        let (fu, fp, fq) = (along(&u), along(&p), along(&q));
-        let (sin, cos) = b.theta.sin_cos();
-        let turn = Complex::from_polar(1.0, b.theta * (self.n - 1) as f64);
+        let h = x.hypot(y);
+        RowBase {
+            a,
+            fu: along(&u),
+            fp: along(&p),
+            fq: along(&q),
+            psi: y.atan2(x).rem_euclid(TAU),
+            turn: if h > 0.0 {
+                Complex::new(x / h, y / h)
+            } else {
+                Complex::new(1.0, 0.0)
+            },
+        }
+    }
+
+    /// The frame components of Σ along one grid row (fixed φ and branch angle θ), for every
+    /// grid column, each up to a positive factor of its own: (Σ·e₁, Σ·e₂, Σ·ĉ) for an
+    /// orthonormal frame (e₁, e₂, ĉ) with ĉ the chord direction (Σ divided by max(1, s)ⁿ⁻¹, as in
+    /// [`Setup::scaled_sum`]). Smooth in (φ, log s); Σ ∥ chord with the same sense iff the first
+    /// two vanish and the third is positive, and the factor changes neither the signs nor the
+    /// direction. From degree [`ROW_CLOSED_FORM_DEGREE`] the sums Σ (r e^{±iθ})ʲ are
+    /// (1 − qⁿ)/(1 − q), multiplied by |1 − q|² so that no division is needed (the factor); below,
+    /// or next to q = 1, the columns' sums advance together term by term in the order of
+    /// [`geometric_sums`]. e^{i(n−1)θ} = e^{iψ} (θ = (ψ + 2πk)/(n − 1)) comes from the row and
+    /// e^{inθ} = e^{iψ}e^{iθ}: one sine and cosine per row and branch.
+    fn row_conditions(
+        &self,
+        base: &RowBase,
+        theta: f64,
+        columns: &[Column; GRID.1],
+        out: &mut [[f64; 3]],
+    ) {
+        let (sin, cos) = theta.sin_cos();
+        let turn = base.turn;
         let ratio = columns.map(|c| {
             Complex::new(
                 c.r * cos,
@@ -323,15 +358,21 @@ impl Setup {
             )
         });
         let mut sum = [Complex::new(0.0, 0.0); GRID.1];
+        let mut factor = [1.0; GRID.1];
         if self.n >= ROW_CLOSED_FORM_DEGREE {
-            // (1 − qⁿ)/(1 − q) with qⁿ = rⁿ e^{±inθ}; cells too close to q = 1 term by term.
-            let (sin_n, cos_n) = (b.theta * self.n as f64).sin_cos();
-            for ((sum, column), ratio) in sum.iter_mut().zip(columns).zip(&ratio) {
+            // (1 − qⁿ)·conj(1 − q) with qⁿ = rⁿ e^{±inθ}; cells too close to q = 1 term by term.
+            let full = turn * Complex::new(cos, sin);
+            let (sin_n, cos_n) = (full.im, full.re);
+            for (((sum, factor), column), ratio) in
+                sum.iter_mut().zip(&mut factor).zip(columns).zip(&ratio)
+            {
                 let gap = Complex::new(1.0, 0.0) - *ratio;
-                if gap.norm_sqr() >= ROW_CLOSED_FORM_GAP * ROW_CLOSED_FORM_GAP {
+                let gap2 = gap.norm_sqr();
+                if gap2 >= ROW_CLOSED_FORM_GAP * ROW_CLOSED_FORM_GAP {
                     let im = if column.log_s <= 0.0 { sin_n } else { -sin_n };
                     let power = Complex::new(column.r_n * cos_n, column.r_n * im);
-                    *sum = (Complex::new(1.0, 0.0) - power) / gap;
+                    *sum = (Complex::new(1.0, 0.0) - power) * gap.conj();
+                    *factor = gap2;
                 } else {
                     let mut power = Complex::new(1.0, 0.0);
                     for _ in 0..self.n {
@@ -349,15 +390,16 @@ impl Setup {
                 }
             }
         }
-        for ((cell, column), complex) in out.iter_mut().zip(columns).zip(sum) {
+        for (((cell, column), complex), factor) in out.iter_mut().zip(columns).zip(sum).zip(factor)
+        {
             let complex = if column.log_s > 0.0 {
                 complex * turn
             } else {
                 complex
             };
-            let axial = a * column.real;
+            let axial = base.a * column.real * factor;
             for m in 0..3 {
-                cell[m] = axial * fu[m] + complex.re * fp[m] + complex.im * fq[m];
+                cell[m] = axial * base.fu[m] + complex.re * base.fp[m] + complex.im * base.fq[m];
             }
         }
     }
@@ -739,21 +781,26 @@ impl TypicalSpatial {
         let ls_at = |j: usize| -span + 2.0 * span * j as f64 / (ns - 1) as f64;
         let frame = setup.chord_frame();
         let columns: [Column; GRID.1] = std::array::from_fn(|j| Column::new(ls_at(j), degree));
+        let bases: Vec<RowBase> = (0..=np)
+            .map(|i| setup.row_base(phi_at(i), &frame))
+            .collect();
         let mut errors = vec![0.0; (np + 1) * ns];
         let mut signs = vec![0u8; (np + 1) * ns];
         for &k in ks {
-            let rows: Vec<Branch> = (0..=np).map(|i| setup.branch(phi_at(i), k)).collect();
-            let thetas: Vec<f64> = rows.iter().map(|b| b.theta).collect();
+            let thetas: Vec<f64> = bases
+                .iter()
+                .map(|b| (b.psi + TAU * k as f64) / (degree - 1) as f64)
+                .collect();
             let near = |i: usize| {
                 (i.saturating_sub(1)..=(i + 1).min(np)).any(|x| thetas[x].abs() < FRAC_PI_2)
             };
             if !(0..=np).any(near) {
                 continue;
             }
-            for (i, b) in rows.iter().enumerate() {
+            for (i, base) in bases.iter().enumerate() {
                 let row = &mut grid[i * ns..(i + 1) * ns];
                 if near(i) {
-                    setup.row_conditions(b, &columns, &frame, row);
+                    setup.row_conditions(base, thetas[i], &columns, row);
                 } else {
                     row.fill([f64::NAN; 3]);
                 }
@@ -1092,17 +1139,24 @@ mod tests {
             for k in setup.branches() {
                 for phi in [-1.5, -0.7, 0.0, 0.3, 1.2] {
                     let b = setup.branch(phi, k);
+                    let base = setup.row_base(phi, &frame);
+                    assert_eq!((base.psi + TAU * k as f64) / (n - 1) as f64, b.theta);
                     let mut row = [[0.0; 3]; GRID.1];
-                    setup.row_conditions(&b, &columns, &frame, &mut row);
+                    setup.row_conditions(&base, b.theta, &columns, &mut row);
                     for (cell, column) in row.iter().zip(&columns) {
+                        // Each cell is Σ's frame components times a positive factor: equal
+                        // directions, and signs.
                         let sum = setup.scaled_sum(&b, column.log_s);
+                        let want = frame.map(|e| sum.dot(&e) / sum.norm());
+                        let norm =
+                            (cell[0] * cell[0] + cell[1] * cell[1] + cell[2] * cell[2]).sqrt();
                         for m in 0..3 {
-                            let want = sum.dot(&frame[m]);
                             assert!(
-                                (cell[m] - want).abs() <= 1e-12 * sum.norm(),
-                                "n {n} k {k} phi {phi} log s {}: {} vs {want}",
+                                (cell[m] / norm - want[m]).abs() <= 2e-12,
+                                "n {n} k {k} phi {phi} log s {}: {} vs {}",
                                 column.log_s,
-                                cell[m]
+                                cell[m] / norm,
+                                want[m]
                             );
                         }
                     }

@@ -398,9 +398,9 @@ impl Setup {
                 complex
             };
             let axial = base.a * column.real * factor;
-            for m in 0..3 {
-                cell[m] = axial * base.fu[m] + complex.re * base.fp[m] + complex.im * base.fq[m];
-            }
+            *cell = std::array::from_fn(|m| {
+                axial * base.fu[m] + complex.re * base.fp[m] + complex.im * base.fq[m]
+            });
         }
     }
 
@@ -663,28 +663,8 @@ impl TypicalSpatial {
     /// to a Class A curve that passes the checks of [`TypicalSpatial::solve`], the full
     /// [`TypicalSpatial::from_points`] is run. Following the branch keeps the curve continuous
     /// during a drag (it need not be the least-turning solution `from_points` would pick).
-    ///
-    /// ```
-    /// use bez_core::Vector3;
-    /// use class_a::TypicalSpatial;
-    /// let mut a = [
-    ///     Vector3::new(0.0, 0.0, 0.0),
-    ///     Vector3::new(1.0, 0.0, 0.2),
-    ///     Vector3::new(6.21, 6.54, 1.79),
-    ///     Vector3::new(6.12, 9.44, 2.73),
-    /// ];
-    /// let mut t = TypicalSpatial::from_points(&a, 7)?;
-    /// for _ in 0..10 {
-    ///     a[3] += Vector3::new(0.02, 0.01, 0.0);
-    ///     t = t.update(&a)?;
-    /// }
-    /// assert!(t.class_a_margin() >= 0.0);
-    /// # Ok::<(), class_a::ClassAError>(())
-    /// ```
-    ///
-    /// # Errors
-    /// As [`TypicalSpatial::from_points`].
-    pub fn update(&self, a: &[Vector3; 4]) -> Result<Self, ClassAError> {
+    /// Public through [`TypicalSpatial::edit`], which adds the curve, its certificate and slope.
+    pub(crate) fn update(&self, a: &[Vector3; 4]) -> Result<Self, ClassAError> {
         let setup = Setup::new(a, self.degree)?;
         let psi = setup.branch(self.phi, 0).theta * (self.degree - 1) as f64;
         let turns = ((self.theta * (self.degree - 1) as f64 - psi) / TAU).round();

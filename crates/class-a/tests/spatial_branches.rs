@@ -138,7 +138,9 @@ fn a_drag_is_followed_by_continuation() {
             rng.range(-1.0, 1.0),
         );
         a[3] += step * (0.01 * scale);
-        let next = t.update(&a).unwrap();
+        let frame = t.edit(&a).unwrap();
+        let next = frame.solution;
+        assert_eq!(frame.curve, next.curve().unwrap());
         // The continued solution is one of the full search's, Class A, and close to the last.
         let all = TypicalSpatial::candidates(&a, 9).unwrap();
         assert!(all.iter().any(|c| {

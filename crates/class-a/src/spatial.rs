@@ -239,7 +239,7 @@ impl Setup {
     /// * the unit vector's derivative is (I − ûûᵀ) Σ' / |Σ| (û = Σ/|Σ|), so the scale factor
     ///   e^{−Jλ} of Σ drops out.
     ///
-    /// Tested against central differences of [`Setup::residual`].
+    /// Tested against central differences of an explicit rotation-matrix sum.
     fn residual_jacobian(&self, phi: f64, log_s: f64, k: i64) -> (Vector3, Vector3, Vector3) {
         let b = self.branch(phi, k);
         let n = self.n;
@@ -492,7 +492,7 @@ impl TypicalSpatial {
     /// (a curve of degree n can turn its tangent by up to (n − 1)θ). Method
     /// ([`TypicalSpatial::candidates`]): on each branch that can be Class A (|θ| < π/2), a
     /// 36 × 20 grid over (φ, log s) ∈ [−π/2, π/2) × [−σ, σ], σ = min(4, 10/(n − 1)), of the two
-    /// components of Σ sʲRʲv₀ normal to the chord; damped Newton (finite-difference Jacobian,
+    /// components of Σ sʲRʲv₀ normal to the chord; damped Newton (Jacobian in closed form,
     /// least squares on the 3-vector direction residual) starts in every cell where both
     /// components change sign, and at the four best local minima of the direction error. L is
     /// |α₃ − α₀| / |Σ| (eq. (15) fixes only the direction).

@@ -12,32 +12,14 @@
 //! ```
 #![allow(clippy::print_stdout, reason = "an example reports on the terminal")]
 
+#[path = "../tests/common/g2.rs"]
+mod g2;
+
 use bez_core::{BezierCurve, Vector2};
 use class_a::{
     ClassAError, ClassASpline, Knot, class_a_curve, curvature_certificate, end_curvatures,
     hermite_planar, typical_matrix2,
 };
-
-/// Knots on the log spiral r = e^{0.2φ} at φ = 0, 1.2, 2.4, 3.6, with its curvature if asked.
-fn spiral_knots(with_curvature: bool) -> Vec<Knot> {
-    let b: f64 = 0.2;
-    (0..4)
-        .map(|i| {
-            let phi = 1.2 * f64::from(i);
-            let r = (b * phi).exp();
-            let (sn, cs) = phi.sin_cos();
-            let knot = Knot::new(
-                Vector2::new(r * cs, r * sn),
-                Vector2::new(b * cs - sn, b * sn + cs),
-            );
-            if with_curvature {
-                knot.with_curvature(1.0 / (r * (1.0 + b * b).sqrt()))
-            } else {
-                knot
-            }
-        })
-        .collect()
-}
 
 fn report(name: &str, spline: &ClassASpline) -> Result<(), ClassAError> {
     let segs = spline.to_bezier_segments();
@@ -63,30 +45,13 @@ fn report(name: &str, spline: &ClassASpline) -> Result<(), ClassAError> {
     Ok(())
 }
 
-/// A fixed-seed generator of uniform numbers in [0, 1) (64-bit LCG, top 53 bits).
-fn uniform(state: &mut u64) -> f64 {
-    *state = state
-        .wrapping_mul(6_364_136_223_846_793_005)
-        .wrapping_add(1_442_695_040_888_963_407);
-    (*state >> 11) as f64 / (1u64 << 53) as f64
-}
-
 /// G2 data of 400 perturbed typical curves (as in the test `g2_recovers_perturbed_class_a_curves`):
 /// how many with proven monotone curvature are solved, and recover their matrix.
 fn recovery() -> Result<(), ClassAError> {
     let mut state = 12_345u64;
     let (mut known, mut solved, mut same) = (0, 0, 0);
     for _ in 0..400 {
-        let n = 3 + (uniform(&mut state) * 10.0) as usize;
-        let theta = (0.3 + 2.5 * uniform(&mut state)) / (n - 1) as f64;
-        let c = theta.cos();
-        let s = if uniform(&mut state) < 0.5 {
-            1.0 / c + 0.3 * uniform(&mut state)
-        } else {
-            c - 0.3 * uniform(&mut state)
-        };
-        let delta = [0; 4].map(|_| 0.05 * (2.0 * uniform(&mut state) - 1.0));
-        let m = class_a::perturb2(&typical_matrix2(s, theta), delta);
+        let (n, m) = g2::perturbed_typical(&mut state);
         let curve = class_a_curve(&Vector2::new(0.0, 0.0), &Vector2::new(1.0, 0.0), &m, n)?;
         if !curvature_certificate(&curve)?.is_monotone() {
             continue;
@@ -127,9 +92,9 @@ fn typical(s: f64, theta: f64, n: usize) -> Result<(Knot, Knot, BezierCurve<2>),
 }
 
 fn main() -> Result<(), ClassAError> {
-    report("G1 spline", &ClassASpline::new(spiral_knots(false), 6)?)?;
-    report("G2 spline", &ClassASpline::new(spiral_knots(true), 6)?)?;
-    let auto = ClassASpline::with_g2_joints(spiral_knots(false), 6)?;
+    report("G1 spline", &ClassASpline::new(g2::spiral_knots(false), 6)?)?;
+    report("G2 spline", &ClassASpline::new(g2::spiral_knots(true), 6)?)?;
+    let auto = ClassASpline::with_g2_joints(g2::spiral_knots(false), 6)?;
     report("G2 spline, curvatures chosen from the G1 one", &auto)?;
 
     let factors = [0.5, 0.7, 0.85, 0.95, 1.0, 1.05, 1.15, 1.4, 2.0];

@@ -69,9 +69,15 @@ impl TypicalPlanar {
 }
 
 impl TypicalSpatial {
-    /// One editing frame continued from `self`: [`TypicalSpatial::update`], its curve, the
-    /// torsion certificate ([`torsion_certificate`]) and the LTG slope
-    /// ([`torsion_samples`], [`log_graph`]).
+    /// One editing frame continued from `self` (the previous frame's solution) for the moved
+    /// points α₀..α₃: the solution, its curve, the torsion certificate ([`torsion_certificate`])
+    /// and the LTG slope ([`torsion_samples`], [`log_graph`]). This is the editing API.
+    ///
+    /// The solution follows `self`'s branch: damped Newton from `self`'s (φ, log s) on its
+    /// branch k = round(((n − 1)θ − ψ)/2π), without the grid; if that does not converge to a
+    /// Class A curve passing the checks of [`TypicalSpatial::solve`], the full
+    /// [`TypicalSpatial::from_points`] is run. Following the branch keeps the curve continuous
+    /// during a drag (it need not be the least-turning solution `from_points` would pick).
     ///
     /// ```
     /// use bez_core::Vector3;
@@ -82,16 +88,20 @@ impl TypicalSpatial {
     ///     Vector3::new(6.21, 6.54, 1.79),
     ///     Vector3::new(6.12, 9.44, 2.73),
     /// ];
-    /// let t = TypicalSpatial::from_points(&a, 7)?;
-    /// a[3] += Vector3::new(0.02, 0.01, 0.0);
-    /// let f = t.edit(&a)?;
-    /// assert!(f.certificate.is_ok() && f.slope.is_some());
-    /// assert!((f.curve.end() - a[3]).norm() < 1e-9);
+    /// let mut t = TypicalSpatial::from_points(&a, 7)?;
+    /// for _ in 0..10 {
+    ///     a[3] += Vector3::new(0.02, 0.01, 0.0);
+    ///     let f = t.edit(&a)?;
+    ///     assert!(f.certificate.is_ok() && f.slope.is_some());
+    ///     assert!((f.curve.end() - a[3]).norm() < 1e-9);
+    ///     t = f.solution;
+    /// }
+    /// assert!(t.class_a_margin() >= 0.0);
     /// # Ok::<(), class_a::ClassAError>(())
     /// ```
     ///
     /// # Errors
-    /// As [`TypicalSpatial::update`].
+    /// As [`TypicalSpatial::from_points`].
     pub fn edit(&self, a: &[Vector3; 4]) -> Result<EditFrame<Self, 3>, ClassAError> {
         let solution = self.update(a)?;
         let curve = solution.curve()?;

@@ -114,6 +114,19 @@ struct Branch {
     theta: f64,
 }
 
+/// The parts of a grid row at φ shared by every branch: a = u·v₀ and the frame components of
+/// u, p = v₀ − a u and q = u × p ([`Setup::row_conditions`]), the turn ψ(φ) ∈ (0, 2π) and
+/// e^{iψ} (= e^{i(n−1)θ} on every branch).
+#[derive(Debug, Clone, Copy)]
+struct RowBase {
+    a: f64,
+    fu: [f64; 3],
+    fp: [f64; 3],
+    fq: [f64; 3],
+    psi: f64,
+    turn: Complex<f64>,
+}
+
 /// One grid column log s of the Newton-start grid, with the quantities every row shares:
 /// r = e^{−|log s|}, rⁿ and Σ_{j<n} rʲ.
 #[derive(Debug, Clone, Copy, Default)]
@@ -200,12 +213,7 @@ impl Setup {
 
     /// Residual: unit(Σ) − unit(chord), a 3-vector (2 independent components).
     fn residual(&self, phi: f64, log_s: f64, k: i64) -> Vector3 {
-        self.branch_residual(&self.branch(phi, k), log_s)
-    }
-
-    /// [`Setup::residual`] on a rotation already formed (Newton's steps in log s share it).
-    fn branch_residual(&self, b: &Branch, log_s: f64) -> Vector3 {
-        let sum = self.scaled_sum(b, log_s);
+        let sum = self.scaled_sum(&self.branch(phi, k), log_s);
         let c = self.unit_chord;
         let n = sum.norm();
         if n.is_finite() && n > 0.0 {
@@ -215,28 +223,130 @@ impl Setup {
         }
     }
 
-    /// The frame components of Σ along one grid row (fixed φ and k), for every grid column:
-    /// (Σ·e₁, Σ·e₂, Σ·ĉ) for an orthonormal frame (e₁, e₂, ĉ) with ĉ the chord direction (Σ
-    /// divided by max(1, s)ⁿ⁻¹, as in [`Setup::scaled_sum`]). Smooth in (φ, log s); Σ ∥ chord
-    /// with the same sense iff the first two vanish and the third is positive. The row's frame
-    /// products and e^{±iθ} are formed once; the columns' sums Σ (r e^{±iθ})ʲ advance together
-    /// (independent chains the processor overlaps), each term by term in the order of
-    /// [`geometric_sums`].
-    fn row_conditions(
-        &self,
-        b: &Branch,
-        columns: &[Column; GRID.1],
-        frame: &[Vector3; 3],
-        out: &mut [[f64; 3]],
-    ) {
+    /// The residual r = unit(Σ) − ĉ of [`Setup::residual`] and its partial derivatives
+    /// (∂r/∂φ, ∂r/∂log s) in closed form, for Newton's steps.
+    ///
+    /// With Σ = a·R·u + Re(C)·p + Im(C)·q (a = u·v₀, p = v₀ − a u, q = u × v₀,
+    /// R = Σ_j e^{(j−J)λ}, C = Σ_j e^{(j−J)λ} e^{ijθ}, λ = log s, J = 0 for λ ≤ 0 and n − 1
+    /// above, the scaling of [`Setup::scaled_sum`]):
+    ///
+    /// * ∂R/∂λ = Σ (j − J) e^{(j−J)λ} =: R', ∂C/∂λ = Σ (j − J) e^{(j−J)λ} e^{ijθ} =: C' and
+    ///   ∂C/∂θ = i(C' + J C);
+    /// * u(φ) = N cos φ + B sin φ (eq. (14)), u' = −N sin φ + B cos φ; since u·v₀ = u·v₁ = a, the
+    ///   turn is ψ = atan2(u·(v₀ × v₁), v₀·v₁ − a²), so ψ' = (x y' − y x')/(x² + y²) with
+    ///   y = u·(v₀ × v₁), x = v₀·v₁ − a², y' = u'·(v₀ × v₁), x' = −2a a', a' = u'·v₀, and
+    ///   θ' = ψ'/(n − 1); p' = −a'u − a u', q' = u' × v₀;
+    /// * the unit vector's derivative is (I − ûûᵀ) Σ' / |Σ| (û = Σ/|Σ|), so the scale factor
+    ///   e^{−Jλ} of Σ drops out.
+    ///
+    /// Tested against central differences of an explicit rotation-matrix sum.
+    fn residual_jacobian(&self, phi: f64, log_s: f64, k: i64) -> (Vector3, Vector3, Vector3) {
+        let b = self.branch(phi, k);
+        let n = self.n;
         let u = b.axis;
+        let (sin_phi, cos_phi) = phi.sin_cos();
+        let du = self.bisector * cos_phi - self.normal * sin_phi;
+        let a = u.dot(&self.v0);
+        let da = du.dot(&self.v0);
+        let p = self.v0 - u * a;
+        let q = u.cross(&self.v0);
+        let w = self.v0.cross(&self.v1);
+        let (y, x) = (u.dot(&w), self.v0.dot(&self.v1) - a * a);
+        let (dy, dx) = (du.dot(&w), -2.0 * a * da);
+        let dtheta = (x * dy - y * dx) / (x * x + y * y) / (n - 1) as f64;
+        let dp = -(u * da + du * a);
+        let dq = du.cross(&self.v0);
+        // Term by term from the largest term 1 (j = J) down: e^{−m|λ|} e^{±imθ}, m = |j − J|.
+        let (r, sign) = if log_s <= 0.0 {
+            ((log_s).exp(), 1.0)
+        } else {
+            ((-log_s).exp(), -1.0)
+        };
+        let ratio = Complex::from_polar(r, sign * b.theta);
+        let (mut real, mut dreal) = (0.0, 0.0);
+        let (mut c, mut dc) = (Complex::new(0.0, 0.0), Complex::new(0.0, 0.0));
+        let (mut power, mut real_power) = (Complex::new(1.0, 0.0), 1.0);
+        for m in 0..n {
+            let mf = m as f64;
+            real += real_power;
+            dreal += mf * real_power;
+            c += power;
+            dc += power * mf;
+            real_power *= r;
+            power *= ratio;
+        }
+        let big_j = if log_s <= 0.0 {
+            0.0
+        } else {
+            // j − J = −m and e^{ijθ} = e^{i(n−1)θ} e^{−imθ}.
+            let turn = Complex::from_polar(1.0, b.theta * (n - 1) as f64);
+            c *= turn;
+            dc *= -turn;
+            dreal = -dreal;
+            (n - 1) as f64
+        };
+        let dc_theta = Complex::new(0.0, 1.0) * (dc + c * big_j);
+        let sum = u * (a * real) + p * c.re + q * c.im;
+        let d_ls = u * (a * dreal) + p * dc.re + q * dc.im;
+        let d_phi = u * (da * real)
+            + du * (a * real)
+            + dp * c.re
+            + dq * c.im
+            + (p * dc_theta.re + q * dc_theta.im) * dtheta;
+        let norm = sum.norm();
+        if !(norm.is_finite() && norm > 0.0) {
+            let bad = Vector3::repeat(f64::INFINITY);
+            return (bad, bad, bad);
+        }
+        let unit = sum / norm;
+        let project = |d: Vector3| (d - unit * unit.dot(&d)) / norm;
+        (unit - self.unit_chord, project(d_phi), project(d_ls))
+    }
+
+    /// The parts of a grid row at φ that every branch k shares ([`RowBase`]); ψ(φ) exactly as
+    /// in [`Setup::branch`].
+    fn row_base(&self, phi: f64, frame: &[Vector3; 3]) -> RowBase {
+        let u = self.normal * phi.cos() + self.bisector * phi.sin();
         let a = u.dot(&self.v0);
         let p = self.v0 - u * a;
         let q = u.cross(&p);
+        let p1 = self.v1 - u * u.dot(&self.v1);
+        let (y, x) = (u.dot(&p.cross(&p1)), p.dot(&p1));
         let along = |v: &Vector3| [v.dot(&frame[0]), v.dot(&frame[1]), v.dot(&frame[2])];
-        let (fu, fp, fq) = (along(&u), along(&p), along(&q));
-        let (sin, cos) = b.theta.sin_cos();
-        let turn = Complex::from_polar(1.0, b.theta * (self.n - 1) as f64);
+        let h = x.hypot(y);
+        RowBase {
+            a,
+            fu: along(&u),
+            fp: along(&p),
+            fq: along(&q),
+            psi: y.atan2(x).rem_euclid(TAU),
+            turn: if h > 0.0 {
+                Complex::new(x / h, y / h)
+            } else {
+                Complex::new(1.0, 0.0)
+            },
+        }
+    }
+
+    /// The frame components of Σ along one grid row (fixed φ and branch angle θ), for every
+    /// grid column, each up to a positive factor of its own: (Σ·e₁, Σ·e₂, Σ·ĉ) for an
+    /// orthonormal frame (e₁, e₂, ĉ) with ĉ the chord direction (Σ divided by max(1, s)ⁿ⁻¹, as in
+    /// [`Setup::scaled_sum`]). Smooth in (φ, log s); Σ ∥ chord with the same sense iff the first
+    /// two vanish and the third is positive, and the factor changes neither the signs nor the
+    /// direction. From degree [`ROW_CLOSED_FORM_DEGREE`] the sums Σ (r e^{±iθ})ʲ are
+    /// (1 − qⁿ)/(1 − q), multiplied by |1 − q|² so that no division is needed (the factor); below,
+    /// or next to q = 1, the columns' sums advance together term by term in the order of
+    /// [`geometric_sums`]. e^{i(n−1)θ} = e^{iψ} (θ = (ψ + 2πk)/(n − 1)) comes from the row and
+    /// e^{inθ} = e^{iψ}e^{iθ}: one sine and cosine per row and branch.
+    fn row_conditions(
+        &self,
+        base: &RowBase,
+        theta: f64,
+        columns: &[Column; GRID.1],
+        out: &mut [[f64; 3]],
+    ) {
+        let (sin, cos) = theta.sin_cos();
+        let turn = base.turn;
         let ratio = columns.map(|c| {
             Complex::new(
                 c.r * cos,
@@ -248,15 +358,21 @@ impl Setup {
             )
         });
         let mut sum = [Complex::new(0.0, 0.0); GRID.1];
+        let mut factor = [1.0; GRID.1];
         if self.n >= ROW_CLOSED_FORM_DEGREE {
-            // (1 − qⁿ)/(1 − q) with qⁿ = rⁿ e^{±inθ}; cells too close to q = 1 term by term.
-            let (sin_n, cos_n) = (b.theta * self.n as f64).sin_cos();
-            for ((sum, column), ratio) in sum.iter_mut().zip(columns).zip(&ratio) {
+            // (1 − qⁿ)·conj(1 − q) with qⁿ = rⁿ e^{±inθ}; cells too close to q = 1 term by term.
+            let full = turn * Complex::new(cos, sin);
+            let (sin_n, cos_n) = (full.im, full.re);
+            for (((sum, factor), column), ratio) in
+                sum.iter_mut().zip(&mut factor).zip(columns).zip(&ratio)
+            {
                 let gap = Complex::new(1.0, 0.0) - *ratio;
-                if gap.norm_sqr() >= ROW_CLOSED_FORM_GAP * ROW_CLOSED_FORM_GAP {
+                let gap2 = gap.norm_sqr();
+                if gap2 >= ROW_CLOSED_FORM_GAP * ROW_CLOSED_FORM_GAP {
                     let im = if column.log_s <= 0.0 { sin_n } else { -sin_n };
                     let power = Complex::new(column.r_n * cos_n, column.r_n * im);
-                    *sum = (Complex::new(1.0, 0.0) - power) / gap;
+                    *sum = (Complex::new(1.0, 0.0) - power) * gap.conj();
+                    *factor = gap2;
                 } else {
                     let mut power = Complex::new(1.0, 0.0);
                     for _ in 0..self.n {
@@ -274,16 +390,17 @@ impl Setup {
                 }
             }
         }
-        for ((cell, column), complex) in out.iter_mut().zip(columns).zip(sum) {
+        for (((cell, column), complex), factor) in out.iter_mut().zip(columns).zip(sum).zip(factor)
+        {
             let complex = if column.log_s > 0.0 {
                 complex * turn
             } else {
                 complex
             };
-            let axial = a * column.real;
-            for m in 0..3 {
-                cell[m] = axial * fu[m] + complex.re * fp[m] + complex.im * fq[m];
-            }
+            let axial = base.a * column.real * factor;
+            *cell = std::array::from_fn(|m| {
+                axial * base.fu[m] + complex.re * base.fp[m] + complex.im * base.fq[m]
+            });
         }
     }
 
@@ -375,7 +492,7 @@ impl TypicalSpatial {
     /// (a curve of degree n can turn its tangent by up to (n − 1)θ). Method
     /// ([`TypicalSpatial::candidates`]): on each branch that can be Class A (|θ| < π/2), a
     /// 36 × 20 grid over (φ, log s) ∈ [−π/2, π/2) × [−σ, σ], σ = min(4, 10/(n − 1)), of the two
-    /// components of Σ sʲRʲv₀ normal to the chord; damped Newton (finite-difference Jacobian,
+    /// components of Σ sʲRʲv₀ normal to the chord; damped Newton (Jacobian in closed form,
     /// least squares on the 3-vector direction residual) starts in every cell where both
     /// components change sign, and at the four best local minima of the direction error. L is
     /// |α₃ − α₀| / |Σ| (eq. (15) fixes only the direction).
@@ -546,28 +663,8 @@ impl TypicalSpatial {
     /// to a Class A curve that passes the checks of [`TypicalSpatial::solve`], the full
     /// [`TypicalSpatial::from_points`] is run. Following the branch keeps the curve continuous
     /// during a drag (it need not be the least-turning solution `from_points` would pick).
-    ///
-    /// ```
-    /// use bez_core::Vector3;
-    /// use class_a::TypicalSpatial;
-    /// let mut a = [
-    ///     Vector3::new(0.0, 0.0, 0.0),
-    ///     Vector3::new(1.0, 0.0, 0.2),
-    ///     Vector3::new(6.21, 6.54, 1.79),
-    ///     Vector3::new(6.12, 9.44, 2.73),
-    /// ];
-    /// let mut t = TypicalSpatial::from_points(&a, 7)?;
-    /// for _ in 0..10 {
-    ///     a[3] += Vector3::new(0.02, 0.01, 0.0);
-    ///     t = t.update(&a)?;
-    /// }
-    /// assert!(t.class_a_margin() >= 0.0);
-    /// # Ok::<(), class_a::ClassAError>(())
-    /// ```
-    ///
-    /// # Errors
-    /// As [`TypicalSpatial::from_points`].
-    pub fn update(&self, a: &[Vector3; 4]) -> Result<Self, ClassAError> {
+    /// Public through [`TypicalSpatial::edit`], which adds the curve, its certificate and slope.
+    pub(crate) fn update(&self, a: &[Vector3; 4]) -> Result<Self, ClassAError> {
         let setup = Setup::new(a, self.degree)?;
         let psi = setup.branch(self.phi, 0).theta * (self.degree - 1) as f64;
         let turns = ((self.theta * (self.degree - 1) as f64 - psi) / TAU).round();
@@ -664,21 +761,26 @@ impl TypicalSpatial {
         let ls_at = |j: usize| -span + 2.0 * span * j as f64 / (ns - 1) as f64;
         let frame = setup.chord_frame();
         let columns: [Column; GRID.1] = std::array::from_fn(|j| Column::new(ls_at(j), degree));
+        let bases: Vec<RowBase> = (0..=np)
+            .map(|i| setup.row_base(phi_at(i), &frame))
+            .collect();
         let mut errors = vec![0.0; (np + 1) * ns];
         let mut signs = vec![0u8; (np + 1) * ns];
         for &k in ks {
-            let rows: Vec<Branch> = (0..=np).map(|i| setup.branch(phi_at(i), k)).collect();
-            let thetas: Vec<f64> = rows.iter().map(|b| b.theta).collect();
+            let thetas: Vec<f64> = bases
+                .iter()
+                .map(|b| (b.psi + TAU * k as f64) / (degree - 1) as f64)
+                .collect();
             let near = |i: usize| {
                 (i.saturating_sub(1)..=(i + 1).min(np)).any(|x| thetas[x].abs() < FRAC_PI_2)
             };
             if !(0..=np).any(near) {
                 continue;
             }
-            for (i, b) in rows.iter().enumerate() {
+            for (i, base) in bases.iter().enumerate() {
                 let row = &mut grid[i * ns..(i + 1) * ns];
                 if near(i) {
-                    setup.row_conditions(b, &columns, &frame, row);
+                    setup.row_conditions(base, thetas[i], &columns, row);
                 } else {
                     row.fill([f64::NAN; 3]);
                 }
@@ -893,27 +995,23 @@ fn local_minima(errors: &[f64], np: usize, ns: usize, thetas: &[f64]) -> Vec<(us
         .collect()
 }
 
-/// Damped Newton (Gauss–Newton with backtracking) on the residual in (φ, log s) on branch k;
-/// φ is free (the branch is continuous in φ).
+/// Damped Newton (Gauss–Newton with backtracking) on the residual in (φ, log s) on branch k,
+/// with the Jacobian in closed form ([`Setup::residual_jacobian`]); φ is free (the branch is
+/// continuous in φ).
 fn newton(setup: &Setup, mut phi: f64, mut ls: f64, k: i64) -> (f64, f64, f64) {
     let max_ls = 700.0 / (setup.n - 1) as f64;
-    let mut r = setup.residual(phi, ls, k);
+    let mut rn = setup.residual(phi, ls, k).norm();
     for iteration in 0..60 {
-        let rn = r.norm();
         // Converged, or (after a dozen steps still far off) not in a solution's basin.
         if rn <= 1e-15 || !rn.is_finite() || (iteration >= 10 && rn > 1e-3) {
             break;
         }
-        let h = 1e-7;
-        let jp = (setup.residual(phi + h, ls, k) - setup.residual(phi - h, ls, k)) / (2.0 * h);
-        let here = setup.branch(phi, k);
-        let js = (setup.branch_residual(&here, ls + h) - setup.branch_residual(&here, ls - h))
-            / (2.0 * h);
+        let (r, jp, js) = setup.residual_jacobian(phi, ls, k);
         // Normal equations of the 3×2 least-squares step.
         let (a, b, c) = (jp.dot(&jp), jp.dot(&js), js.dot(&js));
         let (g0, g1) = (jp.dot(&r), js.dot(&r));
         let det = a * c - b * b;
-        if det.abs() <= 1e-300 || det.is_nan() {
+        if det.abs() <= 1e-300 || !det.is_finite() {
             break;
         }
         let dp = -(c * g0 - b * g1) / det;
@@ -923,11 +1021,11 @@ fn newton(setup: &Setup, mut phi: f64, mut ls: f64, k: i64) -> (f64, f64, f64) {
         for _ in 0..30 {
             let (np, ns) = (phi + step * dp, ls + step * ds);
             if ns.abs() < max_ls && np.is_finite() {
-                let nr = setup.residual(np, ns, k);
-                if nr.norm() < rn {
+                let nr = setup.residual(np, ns, k).norm();
+                if nr < rn {
                     phi = np;
                     ls = ns;
-                    r = nr;
+                    rn = nr;
                     improved = true;
                     break;
                 }
@@ -938,12 +1036,68 @@ fn newton(setup: &Setup, mut phi: f64, mut ls: f64, k: i64) -> (f64, f64, f64) {
             break;
         }
     }
-    (phi, ls, r.norm())
+    (phi, ls, rn)
 }
 
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    /// The closed-form Jacobian of the direction residual against central differences, on
+    /// every branch, both signs of log s, low and high degree.
+    #[test]
+    fn residual_jacobian_matches_central_differences() {
+        // The residual from the rotation matrices themselves, Σ_j sʲ R(u, θ)ʲ v₀ with the axis
+        // of eq. (14) and θ of `turn_about`, without the closed
+        // forms (an independent evaluation).
+        fn explicit(setup: &Setup, phi: f64, ls: f64, k: i64) -> Vector3 {
+            let b = setup.branch(phi, k);
+            let m = rotation(&b.axis, b.theta) * ls.exp();
+            let (mut sum, mut leg) = (Vector3::zeros(), setup.v0);
+            for _ in 0..setup.n {
+                sum += leg;
+                leg = m * leg;
+            }
+            sum / sum.norm() - setup.unit_chord
+        }
+        let a = [
+            Vector3::new(0.0, 0.0, 0.0),
+            Vector3::new(1.0, 0.0, 0.2),
+            Vector3::new(6.21, 6.54, 1.79),
+            Vector3::new(6.12, 9.44, 2.73),
+        ];
+        let h = 1e-7;
+        let mut checked = 0;
+        for n in [3, 4, 7, 20, 45] {
+            let setup = Setup::new(&a, n).unwrap();
+            for k in setup.branches() {
+                for phi in [-1.4, -0.6, 0.0, 0.45, 1.3] {
+                    for ls in [-0.9, -0.2, 0.0, 0.15, 0.7] {
+                        let (r, jp, js) = setup.residual_jacobian(phi, ls, k);
+                        let direct = setup.residual(phi, ls, k);
+                        // Term by term against the closed form of `geometric_sums` from degree 32.
+                        assert!(
+                            (r - direct).norm() <= 1e-11,
+                            "n {n} k {k} phi {phi} ls {ls}: {r:?} {direct:?}"
+                        );
+                        // Fourth-order central differences.
+                        let diff = |f: &dyn Fn(f64) -> Vector3| {
+                            ((f(h) - f(-h)) * 8.0 - (f(2.0 * h) - f(-2.0 * h))) / (12.0 * h)
+                        };
+                        let fp = diff(&|d| explicit(&setup, phi + d, ls, k));
+                        let fs = diff(&|d| explicit(&setup, phi, ls + d, k));
+                        let scale = 1.0 + fp.norm() + fs.norm();
+                        assert!(
+                            (jp - fp).norm() <= 1e-6 * scale && (js - fs).norm() <= 1e-6 * scale,
+                            "n {n} k {k} phi {phi} ls {ls}: {jp:?} {fp:?} / {js:?} {fs:?}"
+                        );
+                        checked += 1;
+                    }
+                }
+            }
+        }
+        assert!(checked > 500, "{checked}");
+    }
 
     /// The grid rows (shared columns, closed form from degree 4) agree with the term-by-term
     /// [`Setup::scaled_sum`] at every node, including the nodes next to q = 1.
@@ -965,17 +1119,24 @@ mod tests {
             for k in setup.branches() {
                 for phi in [-1.5, -0.7, 0.0, 0.3, 1.2] {
                     let b = setup.branch(phi, k);
+                    let base = setup.row_base(phi, &frame);
+                    assert_eq!((base.psi + TAU * k as f64) / (n - 1) as f64, b.theta);
                     let mut row = [[0.0; 3]; GRID.1];
-                    setup.row_conditions(&b, &columns, &frame, &mut row);
+                    setup.row_conditions(&base, b.theta, &columns, &mut row);
                     for (cell, column) in row.iter().zip(&columns) {
+                        // Each cell is Σ's frame components times a positive factor: equal
+                        // directions, and signs.
                         let sum = setup.scaled_sum(&b, column.log_s);
+                        let want = frame.map(|e| sum.dot(&e) / sum.norm());
+                        let norm =
+                            (cell[0] * cell[0] + cell[1] * cell[1] + cell[2] * cell[2]).sqrt();
                         for m in 0..3 {
-                            let want = sum.dot(&frame[m]);
                             assert!(
-                                (cell[m] - want).abs() <= 1e-12 * sum.norm(),
-                                "n {n} k {k} phi {phi} log s {}: {} vs {want}",
+                                (cell[m] / norm - want[m]).abs() <= 2e-12,
+                                "n {n} k {k} phi {phi} log s {}: {} vs {}",
                                 column.log_s,
-                                cell[m]
+                                cell[m] / norm,
+                                want[m]
                             );
                         }
                     }

@@ -15,6 +15,9 @@ use class_a::{
 };
 use proptest::prelude::*;
 
+#[path = "common/g2.rs"]
+mod g2;
+
 /// Relative difference.
 fn rel(a: f64, b: f64) -> f64 {
     (a - b).abs() / b.abs().max(f64::MIN_POSITIVE)
@@ -178,14 +181,6 @@ fn g2_targets_near_the_typical_curvatures() {
     );
 }
 
-/// A fixed-seed generator of uniform numbers in [0, 1) (64-bit LCG, top 53 bits).
-fn uniform(state: &mut u64) -> f64 {
-    *state = state
-        .wrapping_mul(6_364_136_223_846_793_005)
-        .wrapping_add(1_442_695_040_888_963_407);
-    (*state >> 11) as f64 / (1u64 << 53) as f64
-}
-
 /// G2 data read off known curves: perturbed typical matrices (entries ±0.05, degree 3..12,
 /// turn 0.3..2.8, both branches) whose curvature is proven monotone. A solution exists, so the
 /// solve must find one in at least 99 % of them, and every one found is the generating curve
@@ -195,16 +190,7 @@ fn g2_recovers_perturbed_class_a_curves() {
     let mut state = 12_345u64;
     let (mut known, mut solved) = (0usize, 0usize);
     for _ in 0..400 {
-        let n = 3 + (uniform(&mut state) * 10.0) as usize;
-        let theta = (0.3 + 2.5 * uniform(&mut state)) / (n - 1) as f64;
-        let c = theta.cos();
-        let s = if uniform(&mut state) < 0.5 {
-            1.0 / c + 0.3 * uniform(&mut state)
-        } else {
-            c - 0.3 * uniform(&mut state)
-        };
-        let delta = [0; 4].map(|_| 0.05 * (2.0 * uniform(&mut state) - 1.0));
-        let m = perturb2(&typical_matrix2(s, theta), delta);
+        let (n, m) = g2::perturbed_typical(&mut state);
         let curve = class_a_curve(&Vector2::new(0.0, 0.0), &Vector2::new(1.0, 0.0), &m, n).unwrap();
         if !curvature_certificate(&curve).unwrap().is_monotone() {
             continue;
@@ -310,28 +296,6 @@ fn end_preserving_perturbation_keeps_the_end_points() {
     ));
 }
 
-/// Knots on the log spiral r = e^{bφ} (b = 0.2) at φ = 0, 1.2, 2.4, 3.6: its tangent turns
-/// by 1.2 between knots and its curvature κ = e^{−bφ}/√(1 + b²) decreases along it.
-fn knots(with_curvature: bool) -> Vec<Knot> {
-    let b: f64 = 0.2;
-    (0..4)
-        .map(|i| {
-            let phi = 1.2 * f64::from(i);
-            let r = (b * phi).exp();
-            let (sn, cs) = phi.sin_cos();
-            let point = Vector2::new(r * cs, r * sn);
-            // d/dφ (r cos φ, r sin φ) = r (b cos φ − sin φ, b sin φ + cos φ).
-            let tangent = Vector2::new(b * cs - sn, b * sn + cs);
-            let knot = Knot::new(point, tangent);
-            if with_curvature {
-                knot.with_curvature(1.0 / (r * (1.0 + b * b).sqrt()))
-            } else {
-                knot
-            }
-        })
-        .collect()
-}
-
 fn assert_joints(spline: &ClassASpline, g2: bool) {
     let segs = spline.to_bezier_segments();
     assert_eq!(segs.len(), spline.knots().len() - 1);
@@ -363,12 +327,12 @@ fn assert_joints(spline: &ClassASpline, g2: bool) {
 
 #[test]
 fn spline_g1_and_g2_joints() {
-    let g1 = ClassASpline::new(knots(false), 6).unwrap();
+    let g1 = ClassASpline::new(g2::spiral_knots(false), 6).unwrap();
     assert_joints(&g1, false);
-    let g2 = ClassASpline::new(knots(true), 6).unwrap();
+    let g2 = ClassASpline::new(g2::spiral_knots(true), 6).unwrap();
     assert_joints(&g2, true);
     // G2 with the joint curvatures chosen from the G1 spline (means of the one-sided values).
-    let auto = ClassASpline::with_g2_joints(knots(false), 6).unwrap();
+    let auto = ClassASpline::with_g2_joints(g2::spiral_knots(false), 6).unwrap();
     assert_joints(&auto, true);
     for (i, knot) in auto.knots().iter().enumerate() {
         let k = knot.curvature.unwrap();
@@ -384,14 +348,14 @@ fn spline_g1_and_g2_joints() {
         assert!(rel(k, expected) < 1e-9, "knot {i}: {k} {expected}");
     }
     // Prescribed curvatures are kept.
-    let mut mixed = knots(false);
+    let mut mixed = g2::spiral_knots(false);
     let left = g1.to_bezier_segments()[0].signed_curvature(1.0).unwrap();
     mixed[1] = mixed[1].with_curvature(left);
     let kept = ClassASpline::with_g2_joints(mixed, 6).unwrap();
     assert_eq!(kept.knots()[1].curvature, Some(left));
     assert_joints(&kept, true);
     // A prescribed curvature that makes a segment's curvature non-monotone is an error naming it.
-    let mut bad = knots(false);
+    let mut bad = g2::spiral_knots(false);
     bad[1] = bad[1].with_curvature(1.2 * left);
     assert!(matches!(
         ClassASpline::with_g2_joints(bad, 6),
@@ -401,14 +365,14 @@ fn spline_g1_and_g2_joints() {
 
 #[test]
 fn spline_errors_name_the_segment() {
-    let mut k = knots(false);
+    let mut k = g2::spiral_knots(false);
     k[2].tangent = -k[2].tangent;
     assert!(matches!(
         ClassASpline::new(k, 6),
         Err(ClassAError::Segment { index: 1, .. })
     ));
     assert!(matches!(
-        ClassASpline::new(knots(false)[..1].to_vec(), 6),
+        ClassASpline::new(g2::spiral_knots(false)[..1].to_vec(), 6),
         Err(ClassAError::InvalidParameter { .. })
     ));
 }
@@ -416,7 +380,7 @@ fn spline_errors_name_the_segment() {
 #[cfg(feature = "serde")]
 #[test]
 fn spline_serde_round_trip_and_validation() {
-    let s = ClassASpline::new(knots(true), 6).unwrap();
+    let s = ClassASpline::new(g2::spiral_knots(true), 6).unwrap();
     let json = serde_json::to_string(&s).unwrap();
     let back: ClassASpline = serde_json::from_str(&json).unwrap();
     // Solved again from the knots read (serde_json's float parsing may differ in the last bit).

@@ -5,33 +5,8 @@
 use bez_core::Vector3;
 use class_a::{TypicalSpatial, class_a_curve, rotation};
 
-/// SplitMix64: a seeded generator without dependencies.
-struct Rng(u64);
-
-impl Rng {
-    fn next(&mut self) -> f64 {
-        self.0 = self.0.wrapping_add(0x9E37_79B9_7F4A_7C15);
-        let mut z = self.0;
-        z = (z ^ (z >> 30)).wrapping_mul(0xBF58_476D_1CE4_E5B9);
-        z = (z ^ (z >> 27)).wrapping_mul(0x94D0_49BB_1331_11EB);
-        (z ^ (z >> 31)) as f64 / u64::MAX as f64
-    }
-    fn range(&mut self, lo: f64, hi: f64) -> f64 {
-        lo + (hi - lo) * self.next()
-    }
-    fn unit(&mut self) -> Vector3 {
-        loop {
-            let v = Vector3::new(
-                self.range(-1.0, 1.0),
-                self.range(-1.0, 1.0),
-                self.range(-1.0, 1.0),
-            );
-            if v.norm() > 0.1 && v.norm() <= 1.0 {
-                return v / v.norm();
-            }
-        }
-    }
-}
+mod common;
+use common::Rng;
 
 /// A random typical spatial curve: (points α₀..α₃, n, s, θ·u).
 fn random_curve(rng: &mut Rng) -> ([Vector3; 4], usize, f64, Vector3) {
@@ -138,7 +113,9 @@ fn a_drag_is_followed_by_continuation() {
             rng.range(-1.0, 1.0),
         );
         a[3] += step * (0.01 * scale);
-        let next = t.update(&a).unwrap();
+        let frame = t.edit(&a).unwrap();
+        let next = frame.solution;
+        assert_eq!(frame.curve, next.curve().unwrap());
         // The continued solution is one of the full search's, Class A, and close to the last.
         let all = TypicalSpatial::candidates(&a, 9).unwrap();
         assert!(all.iter().any(|c| {

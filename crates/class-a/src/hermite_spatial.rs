@@ -145,7 +145,7 @@ fn unit(v: &Vector3, name: &'static str) -> Result<Vector3, ClassAError> {
 /// is |x' × x''| / |x'|³ ≥ 0, and a prescribed osculating plane needs it non-zero). No other
 /// bound follows from the end data alone in space: the turn between the end tangents bounds the
 /// total curvature ∫κ ds only from below, and the arc length has no upper bound from the data
-/// (a helix of any curvature winds from any point to any other), so unlike the planar
+/// (helices of any given curvature join two points with arcs as long as one likes), so unlike the planar
 /// [`crate::hermite_planar`] there is no reachable range to report; the solve's reach is
 /// measured (crate docs). Inside it the continuation can still stall (`NoConvergence`) or end
 /// at a curve whose curvature or torsion is not monotone: an error, never an unchecked `Ok`.

@@ -123,3 +123,113 @@ impl TypicalSpatial {
         Ok([(kappa.0, tau.0), (kappa.1, tau.1)])
     }
 }
+
+#[cfg(test)]
+mod tests {
+    #![allow(clippy::unwrap_used, reason = "tests fail loudly")]
+    use super::*;
+    use crate::dd::Dd;
+    use bez_core::Vector3;
+
+    type V = [Dd; 3];
+
+    fn sub(a: &V, b: &V) -> V {
+        std::array::from_fn(|i| a[i].add(Dd::from_f64(-b[i].hi)).add(Dd::from_f64(-b[i].lo)))
+    }
+
+    fn cross(a: &V, b: &V) -> V {
+        let m = |x: Dd, y: Dd| x.mul(y);
+        std::array::from_fn(|i| {
+            let (j, k) = ((i + 1) % 3, (i + 2) % 3);
+            let p = m(a[j], b[k]);
+            let q = m(a[k], b[j]);
+            sub(&[p, Dd::ZERO, Dd::ZERO], &[q, Dd::ZERO, Dd::ZERO])[0]
+        })
+    }
+
+    fn dot(a: &V, b: &V) -> f64 {
+        (0..3).fold(Dd::ZERO, |acc, i| acc.add(a[i].mul(b[i]))).hi
+    }
+
+    /// κ and τ at both ends from legs Mʲv formed in double-double arithmetic (about 106 bits),
+    /// with M = s(I + sin θ K + 2 sin²(θ/2) K²): a high-precision oracle for the closed forms
+    /// (the only roundings that reach the result are those of the f64 sines, relative ε).
+    fn oracle(t: &TypicalSpatial) -> [(f64, f64); 2] {
+        let k = crate::square::Matrix3::cross_matrix(&t.axis);
+        let k2 = k * k;
+        let (sin, half) = (t.theta.sin(), (0.5 * t.theta).sin());
+        let d = |x: f64| Dd::from_f64(x);
+        let m: [[Dd; 3]; 3] = std::array::from_fn(|i| {
+            std::array::from_fn(|j| {
+                let id = if i == j { 1.0 } else { 0.0 };
+                d(id)
+                    .add(d(sin).mul(d(k[(i, j)])))
+                    .add(d(2.0 * half).mul(d(half)).mul(d(k2[(i, j)])))
+                    .mul(d(t.s))
+            })
+        });
+        let n = t.degree;
+        let mut legs: Vec<V> = vec![std::array::from_fn(|i| d(t.v0[i]).mul(d(t.length)))];
+        for _ in 1..n {
+            let last = legs[legs.len() - 1];
+            legs.push(std::array::from_fn(|i| {
+                (0..3).fold(Dd::ZERO, |acc, j| acc.add(m[i][j].mul(last[j])))
+            }));
+        }
+        let nf = n as f64;
+        let end = |a: &V, b: &V, c: &V, tangent: &V| {
+            let w = cross(a, b);
+            let w2 = dot(&w, &w);
+            let t = dot(tangent, tangent).sqrt();
+            (
+                (nf - 1.0) / nf * w2.sqrt() / (t * t * t),
+                (nf - 2.0) / nf * dot(&w, c) / w2,
+            )
+        };
+        [
+            end(&legs[0], &legs[1], &legs[2], &legs[0]),
+            // det(Δbₙ₋₃, Δbₙ₋₂, Δbₙ₋₁) = (Δbₙ₋₂ × Δbₙ₋₁)·Δbₙ₋₃.
+            end(&legs[n - 2], &legs[n - 1], &legs[n - 3], &legs[n - 1]),
+        ]
+    }
+
+    #[test]
+    fn closed_forms_agree_with_double_double_legs() {
+        let v0 = Vector3::new(0.6, 0.0, 0.8);
+        for n in [3usize, 7, 20, 30] {
+            for theta in [-1.2, -0.01, 1e-3, 0.3, 1.2] {
+                for polar in [0.2f64, 0.9, std::f64::consts::FRAC_PI_2, 2.6] {
+                    for s in [0.93, 1.0, 1.07] {
+                        let axis = Vector3::new(polar.sin(), 0.3 * polar.cos(), polar.cos());
+                        let axis = axis / axis.norm();
+                        let t = TypicalSpatial {
+                            b0: Vector3::zeros(),
+                            v0,
+                            length: 1.7,
+                            s,
+                            phi: 0.0,
+                            axis,
+                            theta,
+                            degree: n,
+                        };
+                        let closed = t.end_curvatures_torsions().unwrap();
+                        for (c, o) in closed.iter().zip(oracle(&t)) {
+                            assert!(
+                                (c.0 / o.0 - 1.0).abs() < 1e-13,
+                                "n {n} θ {theta} polar {polar} s {s}: κ {} vs {}",
+                                c.0,
+                                o.0
+                            );
+                            assert!(
+                                (c.1 - o.1).abs() < 1e-12 * (o.1.abs() + o.0),
+                                "n {n} θ {theta} polar {polar} s {s}: τ {} vs {}",
+                                c.1,
+                                o.1
+                            );
+                        }
+                    }
+                }
+            }
+        }
+    }
+}

@@ -76,8 +76,9 @@ pub fn end_curvatures(curve: &BezierCurve<2>) -> Result<(f64, f64), ClassAError>
 ///
 /// and at t = 1 the same with Δbₙ₋₃, Δbₙ₋₂, Δbₙ₋₁ (in this order) and |Δbₙ₋₁|³. For a Class A
 /// curve det(Mʲv, Mʲ⁺¹v, Mʲ⁺²v) = (det M)ʲ det(v, Mv, M²v): the end torsions are tied by
-/// (det M)ⁿ⁻³ as the curvatures are (module docs). A spatial G2 solve (prescribed curvature and
-/// torsion with a general 3 × 3 matrix) is not provided.
+/// (det M)ⁿ⁻³ as the curvatures are (module docs). Closed forms for typical spatial curves:
+/// [`crate::TypicalSpatial::end_curvatures_torsions`]; prescribed end curvatures and osculating
+/// planes: [`crate::hermite_spatial`].
 ///
 /// # Errors
 /// [`ClassAError::DegreeTooLow`] for n < 3; [`ClassAError::Singular`] when an end leg is zero or

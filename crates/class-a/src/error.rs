@@ -194,6 +194,13 @@ pub enum ClassAError {
         /// The certificate's verdict.
         verdict: crate::Monotonicity,
     },
+    /// A solved spatial curve meets its end conditions but its torsion is not proven monotone,
+    /// so it is not returned as a Class A curve.
+    #[error("the solved curve's torsion is not proven monotone: {verdict:?}")]
+    TorsionNotMonotone {
+        /// The certificate's verdict.
+        verdict: crate::Monotonicity,
+    },
     /// A segment of a curve of several segments could not be built.
     #[error("segment {index}: {source}")]
     Segment {

@@ -38,14 +38,17 @@ mod exact;
 mod filter;
 mod general;
 mod hermite;
+mod hermite_spatial;
 mod interpolation;
 mod lcg;
 mod matrix;
 mod planar;
 mod sign;
 mod spatial;
+mod spatial_end_curvature;
 mod spiral;
 mod spline;
+mod spline_spatial;
 mod square;
 mod squarefree;
 
@@ -63,6 +66,7 @@ pub use crate::error::{ClassAError, MAX_DEGREE};
 pub use crate::exact::ScaledBernstein;
 pub use crate::general::{end_preserving_curve, perturb2, perturb3};
 pub use crate::hermite::{Knot, hermite_planar};
+pub use crate::hermite_spatial::{SpatialKnot, hermite_spatial};
 pub use crate::interpolation::{INTERPOLATION_TOLERANCE, Interpolation};
 pub use crate::lcg::{
     LogGraph, curvature_samples, curvature_with_derivative, log_graph, log_graph_from_points,
@@ -78,6 +82,7 @@ pub use crate::sign::{MAX_PIECES, MAX_SUBDIVISION_DEPTH};
 pub use crate::spatial::{SpatialRequirement, TypicalSpatial, rotation};
 pub use crate::spiral::{apollonius_pole, log_spiral_pole, spiral_deviation};
 pub use crate::spline::{ClassASpline, MAX_KNOTS};
+pub use crate::spline_spatial::SpatialClassASpline;
 pub use crate::square::{Matrix, Matrix2, Matrix3};
 #[cfg(feature = "paper")]
 pub use crate::{planar::planar_nelder_mead, spiral::printed_pole_eq19};

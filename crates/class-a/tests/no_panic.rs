@@ -12,13 +12,14 @@ use class_a::{
     Certificate, ClassACurve, ClassAError, ClassAReport, ClassASpline, Condition, EditFrame,
     FRAME_SAMPLES, INTERPOLATION_TOLERANCE, Interpolation, Knot, LogGraph, MAX_KNOTS, MAX_PIECES,
     MAX_SUBDIVISION_DEPTH, Matrix, Matrix2, Matrix3, Monotonicity, PlanarFeasibility,
-    PlanarGeometry, Proof, SUBCURVE_SAMPLES, ScaledBernstein, SpatialRequirement, TypicalPlanar,
-    TypicalSpatial, UndecidedCause, apollonius_pole, class_a_curve, curvature_certificate,
-    curvature_numerator, curvature_samples, curvature_with_derivative, end_curvatures,
-    end_curvatures_torsions, end_preserving_curve, hermite_planar, log_graph,
-    log_graph_from_points, log_spiral_pole, perturb2, perturb3, planar_feasibility, rotation,
-    solve_scale, spiral_deviation, torsion_certificate, torsion_numerator, torsion_samples,
-    torsion_with_derivative, typical_matrix2, typical_planar_margin,
+    PlanarGeometry, Proof, SUBCURVE_SAMPLES, ScaledBernstein, SpatialClassASpline, SpatialKnot,
+    SpatialRequirement, TypicalPlanar, TypicalSpatial, UndecidedCause, apollonius_pole,
+    class_a_curve, curvature_certificate, curvature_numerator, curvature_samples,
+    curvature_with_derivative, end_curvatures, end_curvatures_torsions, end_preserving_curve,
+    hermite_planar, hermite_spatial, log_graph, log_graph_from_points, log_spiral_pole, perturb2,
+    perturb3, planar_feasibility, rotation, solve_scale, spiral_deviation, torsion_certificate,
+    torsion_numerator, torsion_samples, torsion_with_derivative, typical_matrix2,
+    typical_planar_margin,
 };
 use proptest::prelude::*;
 
@@ -278,6 +279,60 @@ proptest! {
             prop_assert!(s.knots().iter().all(|k| k.curvature.is_some_and(f64::is_finite)));
         }
     }
+}
+
+proptest! {
+    #![proptest_config(ProptestConfig::with_cases(60))]
+
+    /// Spatial end curvatures in closed form, the spatial G2 Hermite solve and spatial splines:
+    /// typed errors on wild input, finite values in every `Ok`.
+    #[test]
+    fn spatial_g2_and_splines(a in [v3(), v3(), v3(), v3()], b in [v3(), v3()], n in degree(), k in [wild(), wild()], t in wild()) {
+        let knots: Vec<SpatialKnot> = [(a[0], a[1], k[0], b[0]), (a[2], a[3], k[1], b[1])]
+            .into_iter()
+            .map(|(p, d, c, binormal)| {
+                let knot = SpatialKnot::new(p, d);
+                if c > 0.5 { knot.with_curvature(c * t.abs()).with_binormal(binormal) } else if c > -0.5 { knot.with_curvature(c) } else { knot }
+            })
+            .collect();
+        let small = n.min(9);
+        if let Ok(c) = hermite_spatial(&knots[0], &knots[1], small) {
+            prop_assert!(finite_curve(c.as_bezier()));
+            if let Ok(e) = end_curvatures_torsions(c.as_bezier()) {
+                prop_assert!(e.iter().all(|(k, tau)| k.is_finite() && tau.is_finite()));
+            }
+        }
+        let _ = hermite_spatial(&knots[0], &knots[1], n);
+        let typical = TypicalSpatial { b0: a[0], v0: a[1], length: k[0], s: k[1], phi: t, axis: b[0], theta: t, degree: n.min(64) };
+        if let Ok(e) = typical.end_curvatures_torsions() {
+            prop_assert!(e.iter().all(|(k, tau)| !k.is_nan() && !tau.is_nan()));
+        }
+        let mut more = knots.clone();
+        more.push(SpatialKnot::new(a[1] + a[3], b[1]));
+        if let Ok(s) = SpatialClassASpline::new(more, small) {
+            prop_assert!(s.knots().len() == 3 && s.degree() == small);
+            prop_assert!(s.segments().iter().all(|c| finite_curve(c.as_bezier())));
+            prop_assert!(s.to_bezier_segments().iter().all(finite_curve));
+            if let Ok(p) = s.eval(t) { prop_assert!(p.is_finite()); }
+        }
+        let three: Vec<SpatialKnot> = vec![
+            SpatialKnot::new(a[0], a[1]),
+            SpatialKnot::new(a[2], a[3]),
+            SpatialKnot::new(b[0], b[1]),
+        ];
+        if let Ok(s) = SpatialClassASpline::with_g2_joints(three, small) {
+            prop_assert!(s.knots().iter().all(|k| k.curvature.is_some_and(f64::is_finite)));
+        }
+    }
+}
+
+#[test]
+fn spatial_spline_knot_count_is_bounded() {
+    let knot = SpatialKnot::new(Vector3::new(0.0, 0.0, 0.0), Vector3::new(1.0, 0.0, 0.0));
+    assert!(matches!(
+        SpatialClassASpline::new(vec![knot; MAX_KNOTS + 1], 5),
+        Err(ClassAError::InvalidParameter { .. })
+    ));
 }
 
 #[test]

@@ -249,17 +249,6 @@ fn constants_and_errors() {
     assert!(!e.to_string().is_empty());
 }
 
-/// Fails when a public item is missing here (a new public item fails the build of this test
-/// until it joins this suite).
-#[test]
-fn every_public_item_is_in_this_suite() {
-    let missing = bez_core::proptest_support::missing_from_suite(
-        include_str!("../src/lib.rs"),
-        include_str!("no_panic.rs"),
-    );
-    assert!(missing.is_empty(), "not covered by this suite: {missing:?}");
-}
-
 /// kurbo paths with wild coordinates and tolerances: points or an error, never a panic, and
 /// every point finite.
 #[cfg(feature = "kurbo")]
@@ -283,14 +272,5 @@ fn kurbo_paths_never_panic() {
 /// it joins this suite), but for the builders of the reproduction-only `FlattenOptions` and
 /// `split_objective`, which only the `paper` feature exports:
 // paper-only: with_tolerance, with_rule, split_objective
-#[test]
-fn every_public_function_is_called_in_this_suite() {
-    let uncalled = bez_core::proptest_support::uncalled_in_crate_suite(
-        env!("CARGO_MANIFEST_DIR"),
-        include_str!("no_panic.rs"),
-    );
-    assert!(
-        uncalled.is_empty(),
-        "not called by this suite: {uncalled:?}"
-    );
-}
+
+bez_core::suite_completeness_tests!();

@@ -8,6 +8,7 @@ use crate::assess::{assess, chord_params};
 use crate::banded::CyclicBand;
 use crate::bspline::bspline_basis;
 use crate::chord::ChordLengths;
+use crate::corner_angles::{corner_insertions, neighbours_on_tangents};
 use crate::corners::detect_corners;
 use crate::curvature::feature_points;
 use crate::curve::Closure;
@@ -37,7 +38,9 @@ pub enum FitMode {
     /// The paper's interpolation of the fitting points, eq. (4).
     Interpolate,
     /// Interpolation first, then the regular control points re-solved by least squares over all
-    /// data points at their foot-point parameters (sharp control points stay on their data points).
+    /// data points at their foot-point parameters (sharp control points stay on their data points;
+    /// with [`FitOptions::corner_tolerance`] set, the neighbours of a corner, which set its
+    /// tangents, are then moved onto the data's tangents there and the others solved again).
     LeastSquares,
 }
 
@@ -155,6 +158,23 @@ pub struct FitOptions {
     /// After convergence. Default [`Reduction::RemovePoints`] ([`Reduction::Off`] in the paper's
     /// configuration).
     pub reduction: Reduction,
+    /// How far (radians) the turn of the curve at a kept corner may be from the data's turn there
+    /// (estimated from one-sided quadratic fits of the samples next to the corner). Once the
+    /// distance tolerance is met, a corner still off by more gets fitting points inserted next to
+    /// it, and the reduction refuses a step that moves a corner beyond it. Default
+    /// `Some(`[`CORNER_TOLERANCE`](crate::CORNER_TOLERANCE)`)` (0.5°); `None` (the paper's
+    /// configuration) leaves the corners' turns unchecked.
+    #[cfg_attr(feature = "serde", serde(default = "default_corner_tolerance"))]
+    pub corner_tolerance: Option<f64>,
+}
+
+#[cfg(feature = "serde")]
+#[allow(
+    clippy::unnecessary_wraps,
+    reason = "serde's default for an optional field"
+)]
+fn default_corner_tolerance() -> Option<f64> {
+    Some(crate::CORNER_TOLERANCE)
 }
 
 impl FitOptions {
@@ -174,6 +194,7 @@ impl FitOptions {
             samples_per_segment: 32,
             insertion: Insertion::Bisect,
             reduction: Reduction::RemovePoints,
+            corner_tolerance: Some(crate::CORNER_TOLERANCE),
         }
     }
 
@@ -186,6 +207,7 @@ impl FitOptions {
             seeding: Seeding::CurvatureMaxima,
             sharp_angle: 140f64.to_radians(),
             reduction: Reduction::Off,
+            corner_tolerance: None,
             ..Self::new(tolerance)
         }
     }
@@ -264,6 +286,14 @@ impl FitOptions {
     #[must_use]
     pub fn with_reduction(mut self, value: Reduction) -> Self {
         self.reduction = value;
+        self
+    }
+
+    /// With `corner_tolerance` set to `value` (the bound on a kept corner's turn, radians, or
+    /// `None` for no bound).
+    #[must_use]
+    pub fn with_corner_tolerance(mut self, value: Option<f64>) -> Self {
+        self.corner_tolerance = value;
         self
     }
 
@@ -406,6 +436,15 @@ fn validate_options(o: &FitOptions) -> Result<(), SubdivFitError> {
             "must be at least 2",
         ),
     ];
+    if let Some(value) = o.corner_tolerance
+        && !(value > 0.0 && value <= std::f64::consts::PI)
+    {
+        return Err(SubdivFitError::InvalidOption {
+            name: "corner_tolerance",
+            value,
+            reason: "must lie in (0, π]",
+        });
+    }
     for (name, value, ok, reason) in checks {
         if !ok {
             return Err(SubdivFitError::InvalidOption {
@@ -618,9 +657,12 @@ pub fn fit_with_corners<const D: usize>(
     let initial: Vec<usize> = fitting.iter().map(|f| f.0).collect();
     let mut reports = Vec::new();
     let mut best: Option<(SubdivCurve<D>, f64)> = None;
+    // The last round within the tolerance, while points are inserted next to corners whose turn
+    // is still off: it is returned if a later round is not within the tolerance.
+    let mut within: Option<Within<D>> = None;
     let mut round = 0;
     loop {
-        let curve = solve_curve(data, &fitting, closed, options.mode)?;
+        let curve = solve_curve(data, &fitting, closed, options)?;
         let assessment = assess(data, &fitting, &curve, closed, options);
         reports.push(RoundReport {
             round,
@@ -634,28 +676,30 @@ pub fn fit_with_corners<const D: usize>(
             ErrorMeasure::TwoSided => assessment.max_d2c.max(assessment.max_c2d),
         };
         if worst <= options.tolerance {
-            let (curve, fitting, reduced) = match options.reduction {
-                Reduction::Off => (curve, fitting, None),
-                Reduction::RemovePoints | Reduction::RespaceAndRemove => {
-                    let (c, f, report) = reduced_fit(
-                        data,
-                        &chords,
-                        fitting,
-                        curve,
-                        assessment.driven,
-                        closed,
-                        options,
-                    );
-                    (c, f, report.map(|r| RoundReport { round, ..r }))
-                }
-            };
-            return Ok(Fit {
+            let state = Within {
                 curve,
-                fitting: fitting.iter().map(|f| f.0).collect(),
-                initial,
-                reports,
-                reduced,
-            });
+                fitting,
+                errors: assessment.driven,
+                round,
+            };
+            let mut more = state.fitting.clone();
+            if round < options.max_rounds
+                && corner_insertions(data, &chords, &mut more, &state.curve, closed, options) > 0
+            {
+                within = Some(state);
+                fitting = more;
+                round += 1;
+                continue;
+            }
+            return Ok(finish(
+                data, &chords, state, initial, reports, closed, options,
+            ));
+        }
+        if let Some(state) = within.take() {
+            reports.truncate(state.round + 1);
+            return Ok(finish(
+                data, &chords, state, initial, reports, closed, options,
+            ));
         }
         if best.as_ref().is_none_or(|b| worst < b.1) {
             best = Some((curve.clone(), worst));
@@ -680,6 +724,46 @@ pub fn fit_with_corners<const D: usize>(
             });
         }
         round += 1;
+    }
+}
+
+/// A round within the tolerance: its curve, fitting points, per-segment errors and number.
+struct Within<const D: usize> {
+    curve: SubdivCurve<D>,
+    fitting: Vec<(usize, bool)>,
+    errors: Vec<f64>,
+    round: usize,
+}
+
+/// The [`Fit`] of a round within the tolerance, after the reduction.
+fn finish<const D: usize>(
+    data: &[Vector<D>],
+    chords: &ChordLengths,
+    state: Within<D>,
+    initial: Vec<usize>,
+    reports: Vec<RoundReport>,
+    closed: bool,
+    options: &FitOptions,
+) -> Fit<D> {
+    let Within {
+        curve,
+        fitting,
+        errors,
+        round,
+    } = state;
+    let (curve, fitting, reduced) = match options.reduction {
+        Reduction::Off => (curve, fitting, None),
+        Reduction::RemovePoints | Reduction::RespaceAndRemove => {
+            let (c, f, report) = reduced_fit(data, chords, fitting, curve, errors, closed, options);
+            (c, f, report.map(|r| RoundReport { round, ..r }))
+        }
+    };
+    Fit {
+        curve,
+        fitting: fitting.iter().map(|f| f.0).collect(),
+        initial,
+        reports,
+        reduced,
     }
 }
 
@@ -743,12 +827,13 @@ fn split_largest_gap(fitting: &mut Vec<(usize, bool)>, n: usize) {
     }
 }
 
-/// Solves eq. (4) (and, in least-squares mode, the least-squares refinement).
+/// Solves eq. (4) (and, in least-squares mode, the least-squares refinement; with
+/// [`FitOptions::corner_tolerance`] set, with the neighbours of corners on the data's tangents).
 pub(crate) fn solve_curve<const D: usize>(
     data: &[Vector<D>],
     fitting: &[(usize, bool)],
     closed: bool,
-    mode: FitMode,
+    options: &FitOptions,
 ) -> Result<SubdivCurve<D>, SubdivFitError> {
     let k = fitting.len();
     let mut sharp: Vec<bool> = fitting.iter().map(|f| f.1).collect();
@@ -773,17 +858,27 @@ pub(crate) fn solve_curve<const D: usize>(
         .ok_or(SubdivFitError::SingularSystem { size: k })?;
     let points: Vec<Vector<D>> = p.into_iter().map(Vector::<D>::from).collect();
     let curve = SubdivCurve::new(points, sharp, Closure::from_closed(closed))?;
-    match mode {
+    match options.mode {
         FitMode::Interpolate => Ok(curve),
         FitMode::LeastSquares => {
             // A least-squares system without enough data for some control point is singular: the
             // interpolating curve is kept then.
             let mut c = curve;
+            let free = vec![false; k];
             for _ in 0..2 {
-                match least_squares(data, fitting, &c) {
+                match least_squares(data, fitting, &c, &free) {
                     Ok(next) => c = next,
                     Err(_) => break,
                 }
+            }
+            // A corner's tangents are the polygon edges to its neighbours: with the corner bound,
+            // those move onto the data's tangents and the others are solved again around them.
+            if options.corner_tolerance.is_some()
+                && let Some((on_tangents, moved)) =
+                    neighbours_on_tangents(data, fitting, &c, closed, options)
+                && let Ok(next) = least_squares(data, fitting, &on_tangents, &moved)
+            {
+                c = next;
             }
             Ok(c)
         }
@@ -810,20 +905,22 @@ fn segment_weights(sharp: &[bool], j: usize, w: [f64; 4]) -> [(usize, f64); 6] {
 }
 
 /// One least-squares solve: foot-point parameters from `curve`, then the regular control points
-/// minimizing Σ |C(t_i) − v_i|² with the sharp ones fixed.
+/// minimizing Σ |C(t_i) − v_i|² with the sharp ones and those marked in `keep` fixed.
 fn least_squares<const D: usize>(
     data: &[Vector<D>],
     fitting: &[(usize, bool)],
     curve: &SubdivCurve<D>,
+    keep: &[bool],
 ) -> Result<SubdivCurve<D>, SubdivFitError> {
     let n = data.len();
     let sharp = curve.sharp();
+    let k = sharp.len();
+    let fixed = |j: usize| sharp[j] || keep[j];
     let unknown: Vec<Option<usize>> = {
         let mut next = 0;
-        sharp
-            .iter()
-            .map(|&s| {
-                if s {
+        (0..k)
+            .map(|j| {
+                if fixed(j) {
                     None
                 } else {
                     next += 1;

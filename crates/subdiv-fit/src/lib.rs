@@ -66,6 +66,7 @@ mod bspline;
 #[cfg(feature = "paper")]
 pub mod cases;
 mod chord;
+mod corner_angles;
 mod corners;
 mod curvature;
 mod curve;
@@ -84,6 +85,7 @@ mod svg;
 mod tridiagonal;
 
 pub use crate::bspline::{bspline_basis, bspline_basis_d1, bspline_basis_d2, bspline_to_bezier};
+pub use crate::corner_angles::CORNER_TOLERANCE;
 pub use crate::corners::SCALE_RATIO;
 pub use crate::curvature::{FeaturePoint, discrete_curvature, feature_points, turning_angle};
 pub use crate::curve::{Closure, CurvePoint, SubdivCurve};

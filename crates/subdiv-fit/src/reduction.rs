@@ -18,6 +18,7 @@ use bez_core::Vector;
 use crate::SubdivCurve;
 use crate::assess::assess_segment;
 use crate::chord::ChordLengths;
+use crate::corner_angles::corner_turns_kept;
 use crate::fit::{FitOptions, solve_curve};
 
 /// Segments on either side of a removed point that are measured again.
@@ -98,7 +99,7 @@ fn try_removal<const D: usize>(
     let k = fitting.len();
     let mut trial = fitting.to_vec();
     trial.remove(j);
-    let next = solve_curve(data, &trial, closed, options.mode).ok()?;
+    let next = solve_curve(data, &trial, closed, options).ok()?;
     let k2 = trial.len();
     // Old vertex of trial vertex t.
     let old = |t: usize| if t < j { t } else { t + 1 };
@@ -135,6 +136,9 @@ fn try_removal<const D: usize>(
         if out[s] > tol {
             return None;
         }
+    }
+    if !corner_turns_kept(data, &trial, &next, fitting, curve, closed, options) {
+        return None;
     }
     let mut window: Vec<usize> = (0..segs2).filter(|&s| measured(s)).collect();
     window.sort_by_key(|&s| distance(s));
@@ -260,7 +264,10 @@ fn try_trial<const D: usize>(
     options: &FitOptions,
 ) -> Option<(SubdivCurve<D>, Vec<f64>)> {
     let tol = options.tolerance;
-    let next = solve_curve(data, trial, closed, options.mode).ok()?;
+    let next = solve_curve(data, trial, closed, options).ok()?;
+    if !corner_turns_kept(data, trial, &next, fitting, curve, closed, options) {
+        return None;
+    }
     let (k, k2) = (fitting.len(), trial.len());
     let segs = next.segment_count();
     let mut out = vec![f64::NAN; segs];

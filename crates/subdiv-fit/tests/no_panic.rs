@@ -12,12 +12,12 @@ use std::time::{Duration, Instant};
 use bez_core::{BezierForm, MAX_COORDINATE};
 use proptest::prelude::*;
 use subdiv_fit::{
-    BestCurve, Closure, CurvePoint, ErrorMeasure, FeaturePoint, Fit, FitMode, FitOptions,
-    Insertion, MAX_DATA_COORDINATE, MAX_FEATURE_SCALE, MAX_FIT_POINTS, MAX_REDUCED, MAX_ROUNDS,
-    MAX_SAMPLES_PER_SEGMENT, Reduction, RoundReport, SCALE_RATIO, Seeding, Segment, SubdivCurve,
-    SubdivFitError, Vector2, Vector3, bspline_basis, bspline_basis_d1, bspline_basis_d2,
-    bspline_to_bezier, discrete_curvature, feature_points, fit, fit_with_corners, foot_point,
-    point_polyline_distance, scaled_corners, svg_path, turning_angle,
+    BestCurve, CORNER_TOLERANCE, Closure, CurvePoint, ErrorMeasure, FeaturePoint, Fit, FitMode,
+    FitOptions, Insertion, MAX_DATA_COORDINATE, MAX_FEATURE_SCALE, MAX_FIT_POINTS, MAX_REDUCED,
+    MAX_ROUNDS, MAX_SAMPLES_PER_SEGMENT, Reduction, RoundReport, SCALE_RATIO, Seeding, Segment,
+    SubdivCurve, SubdivFitError, Vector2, Vector3, bspline_basis, bspline_basis_d1,
+    bspline_basis_d2, bspline_to_bezier, discrete_curvature, feature_points, fit, fit_with_corners,
+    foot_point, point_polyline_distance, scaled_corners, svg_path, turning_angle,
 };
 
 fn wild() -> impl Strategy<Value = f64> {
@@ -95,9 +95,14 @@ fn options() -> impl Strategy<Value = FitOptions> {
             Just(1_000_000_000)
         ],
         any::<(bool, bool, bool, bool, bool)>(),
+        prop_oneof![
+            Just(None),
+            Just(Some(CORNER_TOLERANCE)),
+            wild().prop_map(Some)
+        ],
     )
         .prop_map(
-            |((tol, angle), scale, (floor, prominence), rounds, samples, flags)| {
+            |((tol, angle), scale, (floor, prominence), rounds, samples, flags, corner)| {
                 let tol = if tol.is_finite() {
                     tol.abs().max(1e-12)
                 } else {
@@ -135,6 +140,7 @@ fn options() -> impl Strategy<Value = FitOptions> {
                         (true, false) => Reduction::RemovePoints,
                         (false, _) => Reduction::Off,
                     })
+                    .with_corner_tolerance(corner)
             },
         )
 }

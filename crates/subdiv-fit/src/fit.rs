@@ -35,7 +35,11 @@ pub enum ErrorMeasure {
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 #[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 pub enum FitMode {
-    /// The paper's interpolation of the fitting points, eq. (4).
+    /// The paper's interpolation of the fitting points, eq. (4) (with
+    /// [`FitOptions::corner_tolerance`] set, a corner's neighbouring control points, which set its
+    /// tangents, are then moved onto the data's tangents there when that moves them by at most a
+    /// quarter of the tolerance: the fitting points next to a corner are then no longer
+    /// interpolated exactly, and the error measures check the moved curve).
     Interpolate,
     /// Interpolation first, then the regular control points re-solved by least squares over all
     /// data points at their foot-point parameters (sharp control points stay on their data points;
@@ -159,9 +163,11 @@ pub struct FitOptions {
     /// configuration).
     pub reduction: Reduction,
     /// How far (radians) the turn of the curve at a kept corner may be from the data's turn there
-    /// (estimated from one-sided quadratic fits of the samples next to the corner). Once the
-    /// distance tolerance is met, a corner still off by more gets fitting points inserted next to
-    /// it, and the reduction refuses a step that moves a corner beyond it. Default
+    /// (estimated from one-sided quadratic fits of the samples next to the corner). With a bound,
+    /// the control points next to a corner are moved onto the data's tangents after each solve
+    /// (see [`FitMode`]); once the distance tolerance is met, a corner still off by more (its
+    /// neighbour is sharp or shared with another corner) gets fitting points inserted next to it;
+    /// and the reduction refuses a step that moves a corner beyond the bound. Default
     /// `Some(`[`CORNER_TOLERANCE`](crate::CORNER_TOLERANCE)`)` (0.5°); `None` (the paper's
     /// configuration) leaves the corners' turns unchecked.
     #[cfg_attr(feature = "serde", serde(default = "default_corner_tolerance"))]
@@ -597,9 +603,29 @@ pub fn fit<const D: usize>(
 /// # Ok::<(), subdiv_fit::SubdivFitError>(())
 /// ```
 ///
+/// With [`FitOptions::corner_tolerance`] set, a fit that ends with
+/// [`SubdivFitError::NoConvergence`] is repeated without the bound (which moves the control points
+/// next to corners, so the distance alone may still be met; a fit that fails costs twice).
+///
 /// # Errors
 /// As [`fit`], and [`SubdivFitError::CornerOutOfRange`] for a corner index outside the data.
 pub fn fit_with_corners<const D: usize>(
+    data: &[Vector<D>],
+    closure: Closure,
+    corners: &[usize],
+    options: &FitOptions,
+) -> Result<Fit<D>, SubdivFitError> {
+    match fit_checked(data, closure, corners, options) {
+        // The corners' bound moves control points: without it the distance alone may be met.
+        Err(SubdivFitError::NoConvergence { .. }) if options.corner_tolerance.is_some() => {
+            fit_checked(data, closure, corners, &options.with_corner_tolerance(None))
+        }
+        result => result,
+    }
+}
+
+/// [`fit_with_corners`] without the retry.
+fn fit_checked<const D: usize>(
     data: &[Vector<D>],
     closure: Closure,
     corners: &[usize],
@@ -827,8 +853,8 @@ fn split_largest_gap(fitting: &mut Vec<(usize, bool)>, n: usize) {
     }
 }
 
-/// Solves eq. (4) (and, in least-squares mode, the least-squares refinement; with
-/// [`FitOptions::corner_tolerance`] set, with the neighbours of corners on the data's tangents).
+/// Solves eq. (4) (and, in least-squares mode, the least-squares refinement); with
+/// [`FitOptions::corner_tolerance`] set, the neighbours of corners go onto the data's tangents.
 pub(crate) fn solve_curve<const D: usize>(
     data: &[Vector<D>],
     fitting: &[(usize, bool)],
@@ -859,7 +885,13 @@ pub(crate) fn solve_curve<const D: usize>(
     let points: Vec<Vector<D>> = p.into_iter().map(Vector::<D>::from).collect();
     let curve = SubdivCurve::new(points, sharp, Closure::from_closed(closed))?;
     match options.mode {
-        FitMode::Interpolate => Ok(curve),
+        FitMode::Interpolate => Ok(if options.corner_tolerance.is_some() {
+            let max_move = 0.25 * options.tolerance;
+            neighbours_on_tangents(data, fitting, &curve, closed, options, max_move)
+                .map_or(curve, |c| c.0)
+        } else {
+            curve
+        }),
         FitMode::LeastSquares => {
             // A least-squares system without enough data for some control point is singular: the
             // interpolating curve is kept then.
@@ -875,7 +907,7 @@ pub(crate) fn solve_curve<const D: usize>(
             // those move onto the data's tangents and the others are solved again around them.
             if options.corner_tolerance.is_some()
                 && let Some((on_tangents, moved)) =
-                    neighbours_on_tangents(data, fitting, &c, closed, options)
+                    neighbours_on_tangents(data, fitting, &c, closed, options, f64::INFINITY)
                 && let Ok(next) = least_squares(data, fitting, &on_tangents, &moved)
             {
                 c = next;

@@ -97,9 +97,10 @@ pub enum Reduction {
     /// curve gains it in the first segments), then [`Reduction::RemovePoints`]. On the printable
     /// ASCII glyphs of DejaVu Sans at 10⁻³ em: 1,923 control points instead of 2,667 with
     /// interpolation, in about 1.6 times the time; 1,784 instead of 2,596 in least-squares mode
-    /// (TrueType stores 1,797). Only the distance tolerance is checked: with the longer segments
-    /// next to them, kept corners may turn by a few degrees more or less than the data's (up to
-    /// 2.6° on the crate's test outline, against under 1° with [`Reduction::RemovePoints`]).
+    /// (TrueType stores 1,797). A step that would move a kept corner's turn beyond
+    /// [`FitOptions::corner_tolerance`] is refused (without that bound, the longer segments next to
+    /// the corners turned them by up to 2.6° more or less than the data on the crate's test
+    /// outline).
     RespaceAndRemove,
 }
 

@@ -520,6 +520,9 @@ fn invariant_violating_json_is_refused() {
         ("max_rounds", serde_json::json!(u64::MAX)),
         ("samples_per_segment", serde_json::json!(1_000_000_000u64)),
         ("samples_per_segment", serde_json::json!(1)),
+        ("corner_tolerance", serde_json::json!(0.0)),
+        ("corner_tolerance", serde_json::json!(-0.1)),
+        ("corner_tolerance", serde_json::json!(4.0)),
     ] {
         let mut v = defaults.clone();
         v[field] = value;
@@ -529,6 +532,15 @@ fn invariant_violating_json_is_refused() {
             assert!(start.elapsed() < Duration::from_secs(1));
         }
     }
+    // Options written before the corner bound existed read with its default; `null` is no bound.
+    let mut old = defaults.clone();
+    old.as_object_mut().unwrap().remove("corner_tolerance");
+    let read: FitOptions = serde_json::from_value(old).unwrap();
+    assert_eq!(read, FitOptions::new(1e-3));
+    let mut unbounded = defaults;
+    unbounded["corner_tolerance"] = serde_json::Value::Null;
+    let read: FitOptions = serde_json::from_value(unbounded).unwrap();
+    assert_eq!(read.corner_tolerance, None);
 }
 
 /// Every public item of `src/lib.rs` (outside the `paper` feature) occurs in this suite.

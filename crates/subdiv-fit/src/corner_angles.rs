@@ -13,9 +13,12 @@
 //! polyline length `t` of the samples on that side ([`data_tangent`]): over a reach of at most
 //! [`REACH_SCALES`] feature scales and half the way to the next sharp fitting point, halved while
 //! the quadratic misses the samples by more than an RMS of [`MODEL_FIT`] times the reach (a bend
-//! the quadratic cannot follow biases its tangent), down to one feature scale (tested: an arc of
+//! the quadratic cannot follow biases its tangent), down to one feature scale; dense data are
+//! thinned to about [`SAMPLES`] samples over the reach (tested: an arc of
 //! radius 1 over a reach of 0.1 to 10⁻⁴ rad, a line exactly; noise of amplitude `ε` moves the
-//! estimate by about `ε / reach`).
+//! estimate by about `ε / reach`). Only sharp vertices where these tangents turn by at least
+//! [`MIN_TURN`] (20°, or the corner angle if smaller) count as corners: a bend found as a corner at
+//! the feature scale that the data resolve as smooth keeps its turn unchecked.
 //!
 //! [`neighbours_on_tangents`] moves a corner's neighbouring control points onto the data's tangent
 //! lines after each solve (in least-squares mode the rest is solved again around them; with
@@ -40,9 +43,18 @@ pub const CORNER_TOLERANCE: f64 = 0.5 * std::f64::consts::PI / 180.0;
 /// The longest reach of a one-sided tangent estimate, in feature scales σ.
 pub(crate) const REACH_SCALES: f64 = 16.0;
 
+/// About how many samples on each side of a corner enter its tangent estimate (dense data are
+/// thinned to this).
+pub(crate) const SAMPLES: usize = 32;
+
 /// The RMS residual, relative to the reach, above which a one-sided quadratic is refitted over
 /// half the reach.
 pub(crate) const MODEL_FIT: f64 = 1e-3;
+
+/// The turn of the data (at the finest scale of the estimate) from which a sharp vertex counts as
+/// a corner whose turn is bounded: 20°, or the corner angle `π − sharp_angle` if that is smaller.
+/// A bend found as a corner at the feature scale but resolved by the data as smooth turns by less.
+pub(crate) const MIN_TURN: f64 = std::f64::consts::PI / 9.0;
 
 /// One interior sharp vertex: its index in the fitting points and the data's incoming and
 /// outgoing unit tangents there.
@@ -79,6 +91,12 @@ pub(crate) fn data_tangent<const D: usize>(
     // (polyline length, offset from the corner) of the samples on this side.
     let mut side: Vec<(f64, Vector<D>)> = Vec::new();
     let (mut t, mut prev) = (0.0, origin);
+    // About SAMPLES samples over the reach at the spacing next to the corner (lengths still add
+    // every edge).
+    let spacing = (data[(c + 1) % n] - origin)
+        .norm()
+        .max((data[(c + n - 1) % n] - origin).norm());
+    let stride = (reach / (SAMPLES as f64 * spacing)).floor().max(1.0) as usize;
     for k in 1..=max_points.min(n - 1) {
         let i = if forwards {
             if !closed && c + k >= n {
@@ -96,7 +114,9 @@ pub(crate) fn data_tangent<const D: usize>(
         if t > reach && side.len() >= 2 {
             break;
         }
-        side.push((t, data[i] - origin));
+        if k % stride == 0 || k == 1 {
+            side.push((t, data[i] - origin));
+        }
     }
     let mut reach = side.last()?.0;
     loop {
@@ -151,8 +171,8 @@ fn quadratic_tangent<const D: usize>(side: &[(f64, Vector<D>)]) -> (Vector<D>, f
     (b, (sum2 / side.len() as f64).sqrt())
 }
 
-/// The interior sharp vertices of the fitting points (open data's ends are not corners) with the
-/// data's tangents there.
+/// The interior sharp vertices of the fitting points (open data's ends are not corners) where the
+/// data turn by at least [`MIN_TURN`] (or the corner angle), with the data's tangents there.
 fn corners<const D: usize>(
     data: &[Vector<D>],
     fitting: &[(usize, bool)],
@@ -163,6 +183,7 @@ fn corners<const D: usize>(
     let k = fitting.len();
     let sigma = options.feature_scale * options.tolerance;
     let sharp: Vec<usize> = (0..k).filter(|&j| fitting[j].1).collect();
+    let min_turn = (std::f64::consts::PI - options.sharp_angle).min(MIN_TURN);
     let mut out = Vec::new();
     for (m, &j) in sharp.iter().enumerate() {
         if !closed && (j == 0 || j + 1 == k) {
@@ -184,7 +205,9 @@ fn corners<const D: usize>(
         let tangent = |forwards: bool, gap: usize| {
             data_tangent(data, closed, c, forwards, gap.div_ceil(2), reach, sigma)
         };
-        if let (Some(incoming), Some(outgoing)) = (tangent(false, before), tangent(true, after)) {
+        if let (Some(incoming), Some(outgoing)) = (tangent(false, before), tangent(true, after))
+            && angle_between(&incoming, &outgoing) >= min_turn
+        {
             out.push(Corner {
                 vertex: j,
                 incoming,

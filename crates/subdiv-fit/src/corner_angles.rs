@@ -36,8 +36,8 @@ use crate::curvature::angle_between;
 use crate::fit::FitOptions;
 use crate::insertion::segment_range;
 
-/// The default [`FitOptions::corner_tolerance`]: 0.5° (in radians), half the 1° a user sees, the
-/// other half left to the estimate of the data's tangents.
+/// A bound for [`FitOptions::corner_tolerance`]: 0.5° (in radians), half of a 1° budget, the other
+/// half left to the estimate of the data's tangents.
 pub const CORNER_TOLERANCE: f64 = 0.5 * std::f64::consts::PI / 180.0;
 
 /// The longest reach of a one-sided tangent estimate, in feature scales σ.

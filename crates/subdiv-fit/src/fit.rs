@@ -168,20 +168,14 @@ pub struct FitOptions {
     /// the control points next to a corner are moved onto the data's tangents after each solve
     /// (see [`FitMode`]); once the distance tolerance is met, a corner still off by more (its
     /// neighbour is sharp or shared with another corner) gets fitting points inserted next to it;
-    /// and the reduction refuses a step that moves a corner beyond the bound. Default
-    /// `Some(`[`CORNER_TOLERANCE`](crate::CORNER_TOLERANCE)`)` (0.5°); `None` (the paper's
-    /// configuration) leaves the corners' turns unchecked.
-    #[cfg_attr(feature = "serde", serde(default = "default_corner_tolerance"))]
+    /// and the reduction refuses a step that moves a corner beyond the bound. Only sharp vertices
+    /// where the data turn by at least 20° (or the corner angle) count. Default `None` (unchecked,
+    /// as in the paper); [`CORNER_TOLERANCE`](crate::CORNER_TOLERANCE) (0.5°) keeps the corners of
+    /// the crate's test outline within 0.001° of the data's, and costs control points and time:
+    /// on the printable ASCII glyphs of DejaVu Sans at 10⁻³ em 2,858 control points instead of
+    /// 2,667 with interpolation, 1.66 ms per glyph instead of 0.88.
+    #[cfg_attr(feature = "serde", serde(default))]
     pub corner_tolerance: Option<f64>,
-}
-
-#[cfg(feature = "serde")]
-#[allow(
-    clippy::unnecessary_wraps,
-    reason = "serde's default for an optional field"
-)]
-fn default_corner_tolerance() -> Option<f64> {
-    Some(crate::CORNER_TOLERANCE)
 }
 
 impl FitOptions {
@@ -201,7 +195,7 @@ impl FitOptions {
             samples_per_segment: 32,
             insertion: Insertion::Bisect,
             reduction: Reduction::RemovePoints,
-            corner_tolerance: Some(crate::CORNER_TOLERANCE),
+            corner_tolerance: None,
         }
     }
 
@@ -214,7 +208,6 @@ impl FitOptions {
             seeding: Seeding::CurvatureMaxima,
             sharp_angle: 140f64.to_radians(),
             reduction: Reduction::Off,
-            corner_tolerance: None,
             ..Self::new(tolerance)
         }
     }

@@ -9,7 +9,8 @@
 //! their refinement (Sec. 2.1), their exact evaluation at any parameter with first and second
 //! derivatives (Sec. 2.2), exact conversion of every segment to a cubic Bézier curve, and the
 //! adaptive fitting of such curves to ordered data points (Secs. 3–5, [`fit`]), with a per-round
-//! report, a two-sided error measure and a least-squares mode beyond the paper.
+//! report, a two-sided error measure, a least-squares mode and corners whose turn stays within
+//! [`FitOptions::corner_tolerance`] of the data's beyond the paper.
 //!
 //! The paper's eigen-structure closed form (Theorem 2, eq. 3) collapses, once its misprints are
 //! corrected, to one uniform cubic B-spline segment per polygon edge: a sharp vertex `p_i` acts as if
@@ -66,6 +67,7 @@ mod bspline;
 #[cfg(feature = "paper")]
 pub mod cases;
 mod chord;
+mod corner_angles;
 mod corners;
 mod curvature;
 mod curve;
@@ -85,6 +87,7 @@ mod svg;
 mod tridiagonal;
 
 pub use crate::bspline::{bspline_basis, bspline_basis_d1, bspline_basis_d2, bspline_to_bezier};
+pub use crate::corner_angles::CORNER_TOLERANCE;
 pub use crate::corners::SCALE_RATIO;
 pub use crate::curvature::{FeaturePoint, discrete_curvature, feature_points, turning_angle};
 pub use crate::curve::{Closure, CurvePoint, SubdivCurve};

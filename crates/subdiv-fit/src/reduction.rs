@@ -18,8 +18,18 @@ use bez_core::Vector;
 use crate::SubdivCurve;
 use crate::assess::assess_segment;
 use crate::chord::ChordLengths;
+use crate::corner_angles::corner_turns_kept;
 use crate::fit::{FitMode, FitOptions, Reduction, solve_curve};
 use crate::refit::refit;
+
+/// `options` with interpolation (eq. (4)) as the mode: the start of [`Reduction::Refit`]'s
+/// least-squares refits.
+fn interpolating(options: &FitOptions) -> FitOptions {
+    FitOptions {
+        mode: FitMode::Interpolate,
+        ..*options
+    }
+}
 
 /// Segments on either side of a removed point that are measured again.
 const WINDOW: usize = 3;
@@ -107,7 +117,7 @@ fn try_removal<const D: usize>(
     let next = if options.reduction == Reduction::Refit {
         // The points around the merged segment, from the interpolating solution, refitted by
         // least squares with every other point where it was.
-        let interp = solve_curve(data, &trial, closed, FitMode::Interpolate).ok()?;
+        let interp = solve_curve(data, &trial, closed, &interpolating(options)).ok()?;
         let mut points: Vec<Vector<D>> = curve.points().to_vec();
         points.remove(j);
         let mut free = Vec::new();
@@ -129,7 +139,7 @@ fn try_removal<const D: usize>(
         let guess = SubdivCurve::new(points, interp.sharp().to_vec(), curve.closure()).ok()?;
         refit(data, &trial, guess, &free)?
     } else {
-        solve_curve(data, &trial, closed, options.mode).ok()?
+        solve_curve(data, &trial, closed, options).ok()?
     };
     // Old vertex of trial vertex t.
     let old = |t: usize| if t < j { t } else { t + 1 };
@@ -166,6 +176,9 @@ fn try_removal<const D: usize>(
         if out[s] > tol {
             return None;
         }
+    }
+    if !corner_turns_kept(data, &trial, &next, fitting, curve, closed, options) {
+        return None;
     }
     let mut window: Vec<usize> = (0..segs2).filter(|&s| measured(s)).collect();
     window.sort_by_key(|&s| distance(s));
@@ -322,7 +335,7 @@ pub(crate) fn fit_spans<const D: usize>(
         fitting[0].1 = true;
         fitting[last].1 = true;
     }
-    let mut curve = solve_curve(data, &fitting, closed, FitMode::Interpolate).ok()?;
+    let mut curve = solve_curve(data, &fitting, closed, &interpolating(options)).ok()?;
     for span in spans(&fitting, n, closed) {
         let inside = |i: usize| strictly_inside(i, span, n);
         let seeded = fitting.iter().filter(|f| inside(f.0)).count();
@@ -335,7 +348,8 @@ pub(crate) fn fit_spans<const D: usize>(
                     if trial.len() < if closed { 3 } else { 2 } {
                         return None;
                     }
-                    let next = respaced_refit(data, &trial, &fitting, &curve, closed, inside)?;
+                    let next =
+                        respaced_refit(data, &trial, &fitting, &curve, closed, options, inside)?;
                     let segs = next.segment_count();
                     let span_segments = (0..segs).filter(|&s| {
                         let start = trial[s].0;
@@ -379,10 +393,13 @@ fn try_trial<const D: usize>(
     let tol = options.tolerance;
     let closed = curve.is_closed();
     let next = if options.reduction == Reduction::Refit {
-        respaced_refit(data, trial, fitting, curve, closed, inside)?
+        respaced_refit(data, trial, fitting, curve, closed, options, inside)?
     } else {
-        solve_curve(data, trial, closed, options.mode).ok()?
+        solve_curve(data, trial, closed, options).ok()?
     };
+    if !corner_turns_kept(data, trial, &next, fitting, curve, closed, options) {
+        return None;
+    }
     let (k, k2) = (fitting.len(), trial.len());
     let segs = next.segment_count();
     let mut out = vec![f64::NAN; segs];
@@ -430,9 +447,10 @@ fn respaced_refit<const D: usize>(
     fitting: &[(usize, bool)],
     curve: &SubdivCurve<D>,
     closed: bool,
+    options: &FitOptions,
     inside: impl Fn(usize) -> bool,
 ) -> Option<SubdivCurve<D>> {
-    let interp = solve_curve(data, trial, closed, FitMode::Interpolate).ok()?;
+    let interp = solve_curve(data, trial, closed, &interpolating(options)).ok()?;
     let mut points = interp.points().to_vec();
     let mut free = Vec::new();
     for (t, f) in trial.iter().enumerate() {

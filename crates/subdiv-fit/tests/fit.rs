@@ -6,10 +6,13 @@ use subdiv_fit::{
     Vector3, discrete_curvature, feature_points, fit, point_polyline_distance, scaled_corners,
 };
 
-#[allow(clippy::unwrap_used, reason = "test helper")]
 fn all_within(data: &[Vector2], fitted: &subdiv_fit::Fit<2>, tol: f64) {
+    curve_within(data, &fitted.curve, tol);
+}
+
+#[allow(clippy::unwrap_used, reason = "test helper")]
+fn curve_within(data: &[Vector2], c: &SubdivCurve<2>, tol: f64) {
     // Independent check: every data point against dense samples of the whole curve.
-    let c = &fitted.curve;
     let mut samples = Vec::new();
     let count = c.segment_count() * 400;
     let params: Vec<f64> = (0..=count)
@@ -223,11 +226,14 @@ fn bad_input_gives_typed_errors() {
 }
 
 /// The literal rule (insert the worst data point) spaces the fitting points unevenly; bisection
-/// reaches the tolerance in fewer rounds with fewer points on the denser open shape.
+/// reaches the tolerance in fewer rounds with fewer points on the denser open shape (the distance
+/// alone: corners' turns unchecked).
 #[test]
 fn bisection_beats_max_error_insertion() {
     let data = open_wave(10);
-    let bisect = FitOptions::new(0.01).with_reduction(Reduction::Off);
+    let bisect = FitOptions::new(0.01)
+        .with_reduction(Reduction::Off)
+        .with_corner_tolerance(None);
     let literal = bisect.with_insertion(Insertion::MaxError);
     let m = fit(&data, subdiv_fit::Closure::Open, &literal).unwrap();
     let b = fit(&data, subdiv_fit::Closure::Open, &bisect).unwrap();
@@ -319,5 +325,37 @@ fn fits_space_curves() {
         let j = f.fitting.iter().position(|&i| i == corner).unwrap();
         assert!(f.curve.sharp()[j]);
         assert_eq!(f.curve.points()[j], data[corner]);
+    }
+}
+
+/// A fit stopped by the round cap returns, with `NoConvergence`, the curve of its best round and
+/// that round's error: for caps 0 to 3 the best error is the smallest of the rounds' errors
+/// (each cap's `max_error` is the error of its last round), never above the last round's, and the
+/// curve is within that error of every data point (an independent check against dense samples).
+#[test]
+fn no_convergence_returns_the_best_curve_with_its_error() {
+    let data = rippled_petals(10, 0.08, 9.0, 0.0);
+    let tol = 1e-4;
+    let mut smallest = f64::INFINITY;
+    for cap in 0..4 {
+        let opts = FitOptions::new(tol).with_max_rounds(cap);
+        let Err(SubdivFitError::NoConvergence {
+            rounds,
+            max_error,
+            best,
+            ..
+        }) = fit(&data, subdiv_fit::Closure::Closed, &opts)
+        else {
+            panic!("cap {cap}: expected NoConvergence");
+        };
+        assert_eq!(rounds, cap);
+        smallest = smallest.min(max_error);
+        assert_eq!(best.max_error(), smallest, "cap {cap}");
+        assert!(best.max_error() <= max_error && best.max_error() > tol);
+        let curve = best.curve::<2>().expect("the data's dimension");
+        assert_eq!(curve.points().len(), curve.sharp().len());
+        if cap == 3 {
+            curve_within(&data, &curve, best.max_error());
+        }
     }
 }

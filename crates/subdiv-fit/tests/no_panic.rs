@@ -12,12 +12,12 @@ use std::time::{Duration, Instant};
 use bez_core::{BezierForm, MAX_COORDINATE};
 use proptest::prelude::*;
 use subdiv_fit::{
-    BestCurve, Closure, CurvePoint, ErrorMeasure, FeaturePoint, Fit, FitMode, FitOptions,
-    Insertion, MAX_DATA_COORDINATE, MAX_FEATURE_SCALE, MAX_FIT_POINTS, MAX_REDUCED, MAX_ROUNDS,
-    MAX_SAMPLES_PER_SEGMENT, Reduction, RoundReport, SCALE_RATIO, Seeding, Segment, SubdivCurve,
-    SubdivFitError, Vector2, Vector3, bspline_basis, bspline_basis_d1, bspline_basis_d2,
-    bspline_to_bezier, discrete_curvature, feature_points, fit, fit_with_corners, foot_point,
-    point_polyline_distance, scaled_corners, svg_path, turning_angle,
+    BestCurve, CORNER_TOLERANCE, Closure, CurvePoint, ErrorMeasure, FeaturePoint, Fit, FitMode,
+    FitOptions, Insertion, MAX_DATA_COORDINATE, MAX_FEATURE_SCALE, MAX_FIT_POINTS, MAX_REDUCED,
+    MAX_ROUNDS, MAX_SAMPLES_PER_SEGMENT, Reduction, RoundReport, SCALE_RATIO, Seeding, Segment,
+    SubdivCurve, SubdivFitError, Vector2, Vector3, bspline_basis, bspline_basis_d1,
+    bspline_basis_d2, bspline_to_bezier, discrete_curvature, feature_points, fit, fit_with_corners,
+    foot_point, point_polyline_distance, scaled_corners, svg_path, turning_angle,
 };
 
 fn wild() -> impl Strategy<Value = f64> {
@@ -95,9 +95,14 @@ fn options() -> impl Strategy<Value = FitOptions> {
             Just(1_000_000_000)
         ],
         any::<(bool, bool, bool, bool, bool)>(),
+        prop_oneof![
+            Just(None),
+            Just(Some(CORNER_TOLERANCE)),
+            wild().prop_map(Some)
+        ],
     )
         .prop_map(
-            |((tol, angle), scale, (floor, prominence), rounds, samples, flags)| {
+            |((tol, angle), scale, (floor, prominence), rounds, samples, flags, corner)| {
                 let tol = if tol.is_finite() {
                     tol.abs().max(1e-12)
                 } else {
@@ -136,6 +141,7 @@ fn options() -> impl Strategy<Value = FitOptions> {
                         (true, false) => Reduction::RemovePoints,
                         (false, _) => Reduction::Off,
                     })
+                    .with_corner_tolerance(corner)
             },
         )
 }
@@ -515,6 +521,9 @@ fn invariant_violating_json_is_refused() {
         ("max_rounds", serde_json::json!(u64::MAX)),
         ("samples_per_segment", serde_json::json!(1_000_000_000u64)),
         ("samples_per_segment", serde_json::json!(1)),
+        ("corner_tolerance", serde_json::json!(0.0)),
+        ("corner_tolerance", serde_json::json!(-0.1)),
+        ("corner_tolerance", serde_json::json!(4.0)),
     ] {
         let mut v = defaults.clone();
         v[field] = value;
@@ -524,6 +533,15 @@ fn invariant_violating_json_is_refused() {
             assert!(start.elapsed() < Duration::from_secs(1));
         }
     }
+    // Options written before the corner bound existed read with its default (none); a bound
+    // round-trips.
+    let mut old = defaults;
+    old.as_object_mut().unwrap().remove("corner_tolerance");
+    let read: FitOptions = serde_json::from_value(old).unwrap();
+    assert_eq!(read, FitOptions::new(1e-3));
+    let bounded = FitOptions::new(1e-3).with_corner_tolerance(Some(CORNER_TOLERANCE));
+    let read: FitOptions = serde_json::from_value(serde_json::to_value(bounded).unwrap()).unwrap();
+    assert_eq!(read, bounded);
 }
 
 /// Every public item of `src/lib.rs` (outside the `paper` feature) occurs in this suite.

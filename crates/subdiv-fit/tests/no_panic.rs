@@ -544,26 +544,4 @@ fn invariant_violating_json_is_refused() {
     assert_eq!(read, bounded);
 }
 
-/// Every public item of `src/lib.rs` (outside the `paper` feature) occurs in this suite.
-#[test]
-fn every_public_item_is_in_this_suite() {
-    let missing = bez_core::proptest_support::missing_from_suite(
-        include_str!("../src/lib.rs"),
-        include_str!("no_panic.rs"),
-    );
-    assert!(missing.is_empty(), "not covered by this suite: {missing:?}");
-}
-
-/// Every public function and method of the crate is called above (a new one fails here until
-/// it joins this suite).
-#[test]
-fn every_public_function_is_called_in_this_suite() {
-    let uncalled = bez_core::proptest_support::uncalled_in_crate_suite(
-        env!("CARGO_MANIFEST_DIR"),
-        include_str!("no_panic.rs"),
-    );
-    assert!(
-        uncalled.is_empty(),
-        "not called by this suite: {uncalled:?}"
-    );
-}
+bez_core::suite_completeness_tests!();

@@ -268,9 +268,8 @@ fn kurbo_paths_never_panic() {
     }
 }
 
-/// Every public function and method of the crate is called above (a new one fails here until
-/// it joins this suite), but for the builders of the reproduction-only `FlattenOptions` and
-/// `split_objective`, which only the `paper` feature exports:
+// Every public function and method of the crate is called above, but for the builders of the
+// reproduction-only `FlattenOptions` and `split_objective`, which only the `paper` feature exports:
 // paper-only: with_tolerance, with_rule, split_objective
 
 bez_core::suite_completeness_tests!();

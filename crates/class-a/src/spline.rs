@@ -1,6 +1,6 @@
 //! Planar Class A curves of several segments through knots with tangents (and curvatures).
 
-use bez_core::{BezierCurve, BezierForm, Vector2};
+use bez_core::{BezierCurve, BezierForm, Vector, Vector2};
 
 use crate::{ClassACurve, ClassAError, Knot, hermite_planar};
 
@@ -75,24 +75,7 @@ impl ClassASpline {
     /// [`ClassAError::DegreeTooLow`] / [`ClassAError::DegreeTooHigh`]; the first segment that
     /// fails as [`ClassAError::Segment`] with its index and the error of [`hermite_planar`].
     pub fn new(knots: Vec<Knot>, degree: usize) -> Result<Self, ClassAError> {
-        if knots.len() < 2 || knots.len() > MAX_KNOTS {
-            return Err(ClassAError::InvalidParameter {
-                name: "number of knots",
-                value: knots.len() as f64,
-                expected: "2..=4096 (MAX_KNOTS)",
-            });
-        }
-        crate::error::check_degree(degree, 2)?;
-        let segments = knots
-            .windows(2)
-            .enumerate()
-            .map(|(index, w)| {
-                hermite_planar(&w[0], &w[1], degree).map_err(|e| ClassAError::Segment {
-                    index,
-                    source: Box::new(e),
-                })
-            })
-            .collect::<Result<Vec<_>, _>>()?;
+        let segments = solve_segments(&knots, degree, 2, hermite_planar)?;
         Ok(Self {
             knots,
             degree,
@@ -185,17 +168,7 @@ impl ClassASpline {
     /// # Errors
     /// [`ClassAError::InvalidParameter`] for u outside [0, m] or NaN.
     pub fn eval(&self, u: f64) -> Result<Vector2, ClassAError> {
-        let m = self.segments.len();
-        if !(0.0..=m as f64).contains(&u) {
-            return Err(ClassAError::InvalidParameter {
-                name: "u",
-                value: u,
-                expected: "in [0, number of segments]",
-            });
-        }
-        let index = (u.floor() as usize).min(m - 1);
-        let t = (u - index as f64).clamp(0.0, 1.0);
-        Ok(self.segments[index].as_bezier().eval(t)?)
+        eval_segments(&self.segments, u)
     }
 
     /// The segments' Bézier forms, in order (for flattening, export or bez-core's kurbo
@@ -207,4 +180,52 @@ impl ClassASpline {
             .map(|s| s.as_bezier().clone())
             .collect()
     }
+}
+
+/// The segments of a spline through `knots`, segment i solved from knots i and i + 1 by
+/// `solve` at `degree`, after the knot count (2..=[`MAX_KNOTS`]) and the degree (from
+/// `min_degree`) are checked; the first failing segment as [`ClassAError::Segment`].
+pub(crate) fn solve_segments<K, const D: usize>(
+    knots: &[K],
+    degree: usize,
+    min_degree: usize,
+    solve: impl Fn(&K, &K, usize) -> Result<ClassACurve<D>, ClassAError>,
+) -> Result<Vec<ClassACurve<D>>, ClassAError> {
+    if knots.len() < 2 || knots.len() > MAX_KNOTS {
+        return Err(ClassAError::InvalidParameter {
+            name: "number of knots",
+            value: knots.len() as f64,
+            expected: "2..=4096 (MAX_KNOTS)",
+        });
+    }
+    crate::error::check_degree(degree, min_degree)?;
+    knots
+        .windows(2)
+        .enumerate()
+        .map(|(index, w)| {
+            solve(&w[0], &w[1], degree).map_err(|e| ClassAError::Segment {
+                index,
+                source: Box::new(e),
+            })
+        })
+        .collect()
+}
+
+/// The point at u ∈ [0, m] of a spline of m `segments`: segment ⌊u⌋ (the last one at u = m)
+/// at its parameter u − ⌊u⌋.
+pub(crate) fn eval_segments<const D: usize>(
+    segments: &[ClassACurve<D>],
+    u: f64,
+) -> Result<Vector<D>, ClassAError> {
+    let m = segments.len();
+    if m == 0 || !(0.0..=m as f64).contains(&u) {
+        return Err(ClassAError::InvalidParameter {
+            name: "u",
+            value: u,
+            expected: "in [0, number of segments]",
+        });
+    }
+    let index = (u.floor() as usize).min(m - 1);
+    let t = (u - index as f64).clamp(0.0, 1.0);
+    Ok(segments[index].as_bezier().eval(t)?)
 }

@@ -3,7 +3,8 @@
 
 use bez_core::{BezierCurve, BezierForm, Vector3};
 
-use crate::{ClassACurve, ClassAError, MAX_KNOTS, SpatialKnot, hermite_spatial};
+use crate::spline::{eval_segments, solve_segments};
+use crate::{ClassACurve, ClassAError, SpatialKnot, hermite_spatial};
 
 /// A spatial curve of several Class A segments: segment i runs from knot i to knot i + 1 with
 /// the knots' tangent directions (G1 at every joint), and with their curvatures (and binormals,
@@ -83,29 +84,12 @@ impl SpatialClassASpline {
     /// Solves the segments between consecutive knots at the given degree ([`hermite_spatial`]).
     ///
     /// # Errors
-    /// [`ClassAError::InvalidParameter`] for fewer than 2 or more than [`MAX_KNOTS`] knots;
+    /// [`ClassAError::InvalidParameter`] for fewer than 2 or more than [`MAX_KNOTS`](crate::MAX_KNOTS) knots;
     /// [`ClassAError::DegreeTooLow`] (below 3) / [`ClassAError::DegreeTooHigh`]; the first
     /// segment that fails as [`ClassAError::Segment`] with its index and the error of
     /// [`hermite_spatial`].
     pub fn new(knots: Vec<SpatialKnot>, degree: usize) -> Result<Self, ClassAError> {
-        if knots.len() < 2 || knots.len() > MAX_KNOTS {
-            return Err(ClassAError::InvalidParameter {
-                name: "number of knots",
-                value: knots.len() as f64,
-                expected: "2..=4096 (MAX_KNOTS)",
-            });
-        }
-        crate::error::check_degree(degree, 3)?;
-        let segments = knots
-            .windows(2)
-            .enumerate()
-            .map(|(index, w)| {
-                hermite_spatial(&w[0], &w[1], degree).map_err(|e| ClassAError::Segment {
-                    index,
-                    source: Box::new(e),
-                })
-            })
-            .collect::<Result<Vec<_>, _>>()?;
+        let segments = solve_segments(&knots, degree, 3, hermite_spatial)?;
         Ok(Self {
             knots,
             degree,
@@ -202,17 +186,7 @@ impl SpatialClassASpline {
     /// # Errors
     /// [`ClassAError::InvalidParameter`] for u outside [0, m] or NaN.
     pub fn eval(&self, u: f64) -> Result<Vector3, ClassAError> {
-        let m = self.segments.len();
-        if !(0.0..=m as f64).contains(&u) {
-            return Err(ClassAError::InvalidParameter {
-                name: "u",
-                value: u,
-                expected: "in [0, number of segments]",
-            });
-        }
-        let index = (u.floor() as usize).min(m - 1);
-        let t = (u - index as f64).clamp(0.0, 1.0);
-        Ok(self.segments[index].as_bezier().eval(t)?)
+        eval_segments(&self.segments, u)
     }
 
     /// The segments' Bézier forms, in order (for flattening or export).

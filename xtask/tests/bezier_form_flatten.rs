@@ -71,12 +71,7 @@ fn subdiv_segment() -> subdiv_fit::Segment<2> {
         Vector2::new(3.0, 1.0),
         Vector2::new(1.5, 2.5),
     ];
-    let curve = SubdivCurve::new(
-        polygon,
-        vec![true, false, false, false],
-        subdiv_fit::Closure::Closed,
-    )
-    .unwrap();
+    let curve = SubdivCurve::with_sharp(polygon, &[0], subdiv_fit::Closure::Closed).unwrap();
     curve.segment(1).unwrap()
 }
 

@@ -32,7 +32,7 @@ fn run(tolerance: f64) -> Result<(), SubdivFitError> {
     let data = outline();
     let result = fit(&data, Closure::Closed, &FitOptions::new(tolerance))?;
     let last = result.last().copied();
-    let corners = result.curve.sharp().iter().filter(|s| **s).count();
+    let corners = result.curve.kinds().iter().filter(|k| k.is_sharp()).count();
     eprintln!(
         "{} data points -> {} control points ({corners} sharp), {} rounds; error data->curve {:.2e}, curve->data {:.2e}",
         data.len(),

@@ -273,7 +273,7 @@ pub(crate) fn neighbours_on_tangents<const D: usize>(
     if !moved.contains(&true) {
         return None;
     }
-    let curve = SubdivCurve::new(points, curve.sharp().to_vec(), curve.closure()).ok()?;
+    let curve = SubdivCurve::new(points, curve.kinds().to_vec(), curve.closure()).ok()?;
     Some((curve, moved))
 }
 

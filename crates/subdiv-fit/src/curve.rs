@@ -5,13 +5,14 @@ use bez_core::{BezierCurve, MAX_COORDINATE, Vector};
 
 use crate::SubdivFitError;
 use crate::bspline::{bspline_basis, bspline_basis_d1, bspline_basis_d2, bspline_to_bezier};
+use crate::vertex::VertexKind;
 
-/// A control polygon, open or closed, with one sharp flag per vertex.
+/// A control polygon, open or closed, with one [`VertexKind`] per vertex.
 ///
 /// Its limit curve under the rules of Sec. 2.1 has one segment per polygon edge:
 /// segment `i` runs from the limit position of `p_i` to that of `p_{i+1}`
 /// (indices modulo `n` for a closed polygon).
-/// Both end vertices of an open polygon are sharp, whatever flag is given.
+/// Both end vertices of an open polygon are sharp, whatever kind is given.
 #[derive(Debug, Clone, PartialEq)]
 #[cfg_attr(
     feature = "serde",
@@ -20,7 +21,7 @@ use crate::bspline::{bspline_basis, bspline_basis_d1, bspline_basis_d2, bspline_
 )]
 pub struct SubdivCurve<const D: usize> {
     points: Vec<Vector<D>>,
-    sharp: Vec<bool>,
+    kinds: Vec<VertexKind>,
     closure: Closure,
 }
 
@@ -55,7 +56,7 @@ impl Closure {
 #[derive(serde::Serialize, serde::Deserialize)]
 struct CurveRepr<const D: usize> {
     points: Vec<Vector<D>>,
-    sharp: Vec<bool>,
+    kinds: Vec<VertexKind>,
     closed: bool,
 }
 
@@ -63,7 +64,7 @@ struct CurveRepr<const D: usize> {
 impl<const D: usize> TryFrom<CurveRepr<D>> for SubdivCurve<D> {
     type Error = SubdivFitError;
     fn try_from(r: CurveRepr<D>) -> Result<Self, SubdivFitError> {
-        Self::new(r.points, r.sharp, Closure::from_closed(r.closed))
+        Self::new(r.points, r.kinds, Closure::from_closed(r.closed))
     }
 }
 
@@ -72,7 +73,7 @@ impl<const D: usize> From<SubdivCurve<D>> for CurveRepr<D> {
     fn from(c: SubdivCurve<D>) -> Self {
         Self {
             points: c.points,
-            sharp: c.sharp,
+            kinds: c.kinds,
             closed: c.closure.is_closed(),
         }
     }
@@ -91,10 +92,10 @@ pub struct CurvePoint<const D: usize> {
 }
 
 impl<const D: usize> SubdivCurve<D> {
-    /// Builds a curve from its control polygon and per-vertex sharp flags.
+    /// Builds a curve from its control polygon and the kind of every vertex.
     ///
     /// An open polygon needs at least 2 vertices, a closed one at least 3.
-    /// The end flags of an open polygon are forced to sharp.
+    /// The end vertices of an open polygon are made sharp.
     ///
     /// # Errors
     /// [`SubdivFitError::TooFewPoints`], [`SubdivFitError::NonFinite`],
@@ -103,7 +104,7 @@ impl<const D: usize> SubdivCurve<D> {
     /// ±`MAX_COORDINATE`.
     pub fn new(
         points: Vec<Vector<D>>,
-        mut sharp: Vec<bool>,
+        mut kinds: Vec<VertexKind>,
         closure: Closure,
     ) -> Result<Self, SubdivFitError> {
         let closed = closure.is_closed();
@@ -114,21 +115,21 @@ impl<const D: usize> SubdivCurve<D> {
                 needed,
             });
         }
-        if sharp.len() != points.len() {
+        if kinds.len() != points.len() {
             return Err(SubdivFitError::FlagCount {
-                flags: sharp.len(),
+                flags: kinds.len(),
                 points: points.len(),
             });
         }
         check_points(&points, MAX_COORDINATE)?;
         if !closed {
-            sharp[0] = true;
-            let last = sharp.len() - 1;
-            sharp[last] = true;
+            kinds[0] = VertexKind::Sharp;
+            let last = kinds.len() - 1;
+            kinds[last] = VertexKind::Sharp;
         }
         Ok(Self {
             points,
-            sharp,
+            kinds,
             closure,
         })
     }
@@ -139,7 +140,28 @@ impl<const D: usize> SubdivCurve<D> {
     /// As [`SubdivCurve::new`].
     pub fn smooth(points: Vec<Vector<D>>, closure: Closure) -> Result<Self, SubdivFitError> {
         let n = points.len();
-        Self::new(points, vec![false; n], closure)
+        Self::new(points, vec![VertexKind::Regular; n], closure)
+    }
+
+    /// A curve whose vertices at the indices `sharp` are sharp and all others regular.
+    ///
+    /// # Errors
+    /// [`SubdivFitError::SegmentOutOfRange`] for an index that is not a vertex; otherwise as
+    /// [`SubdivCurve::new`].
+    pub fn with_sharp(
+        points: Vec<Vector<D>>,
+        sharp: &[usize],
+        closure: Closure,
+    ) -> Result<Self, SubdivFitError> {
+        let n = points.len();
+        let mut kinds = vec![VertexKind::Regular; n];
+        for &i in sharp {
+            *kinds
+                .get_mut(i)
+                .ok_or(SubdivFitError::SegmentOutOfRange { index: i, count: n })? =
+                VertexKind::Sharp;
+        }
+        Self::new(points, kinds, closure)
     }
 
     /// The control points.
@@ -148,10 +170,16 @@ impl<const D: usize> SubdivCurve<D> {
         &self.points
     }
 
-    /// The sharp flags, one per control point.
+    /// The vertex kinds, one per control point.
     #[must_use]
-    pub fn sharp(&self) -> &[bool] {
-        &self.sharp
+    pub fn kinds(&self) -> &[VertexKind] {
+        &self.kinds
+    }
+
+    /// Whether vertex `i` is sharp (`false` when `i` is not a vertex).
+    #[must_use]
+    pub fn is_sharp(&self, i: usize) -> bool {
+        self.kinds.get(i).is_some_and(|k| k.is_sharp())
     }
 
     /// Whether the polygon is open or closed.
@@ -185,10 +213,10 @@ impl<const D: usize> SubdivCurve<D> {
         let n = self.points.len();
         let edges = self.segment_count();
         let mut points = Vec::with_capacity(n + edges);
-        let mut sharp = Vec::with_capacity(n + edges);
+        let mut kinds = Vec::with_capacity(n + edges);
         for i in 0..n {
             let p = self.points[i];
-            let v = if self.sharp[i] {
+            let v = if self.kinds[i].is_sharp() {
                 p
             } else {
                 // Regular vertices always have both neighbours (open ends are sharp).
@@ -197,15 +225,15 @@ impl<const D: usize> SubdivCurve<D> {
                 (prev + 6.0 * p + next) / 8.0
             };
             points.push(v);
-            sharp.push(self.sharp[i]);
+            kinds.push(self.kinds[i]);
             if i < edges {
                 points.push((p + self.points[(i + 1) % n]) * 0.5);
-                sharp.push(false);
+                kinds.push(VertexKind::Regular);
             }
         }
         Self {
             points,
-            sharp,
+            kinds,
             closure: self.closure,
         }
     }
@@ -253,7 +281,7 @@ impl<const D: usize> SubdivCurve<D> {
         if i >= n {
             return Err(SubdivFitError::SegmentOutOfRange { index: i, count: n });
         }
-        Ok(if self.sharp[i] {
+        Ok(if self.kinds[i].is_sharp() {
             self.points[i]
         } else {
             (self.points[(i + n - 1) % n] + 4.0 * self.points[i] + self.points[(i + 1) % n]) / 6.0
@@ -278,12 +306,12 @@ impl<const D: usize> SubdivCurve<D> {
         let n = self.points.len();
         let j = (i + 1) % n;
         let (b, c) = (self.points[i], self.points[j]);
-        let a = if self.sharp[i] {
+        let a = if self.kinds[i].is_sharp() {
             2.0 * b - c
         } else {
             self.points[(i + n - 1) % n]
         };
-        let d = if self.sharp[j] {
+        let d = if self.kinds[j].is_sharp() {
             2.0 * c - b
         } else {
             self.points[(j + 1) % n]

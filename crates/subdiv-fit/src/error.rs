@@ -2,7 +2,7 @@
 
 use bez_core::{CoreError, Vector};
 
-use crate::{Closure, SubdivCurve};
+use crate::{Closure, SubdivCurve, VertexKind};
 
 /// Everything that can go wrong when building, evaluating or fitting a subdivision curve.
 #[derive(Debug, Clone, PartialEq, thiserror::Error)]
@@ -33,10 +33,10 @@ pub enum SubdivFitError {
         /// Index of the second point of the pair.
         next: usize,
     },
-    /// The sharp-flag vector does not have one flag per vertex.
-    #[error("{flags} sharp flags given for {points} vertices")]
+    /// The vertex kinds are not one per vertex.
+    #[error("{flags} vertex kinds given for {points} vertices")]
     FlagCount {
-        /// Number of flags.
+        /// Number of vertex kinds.
         flags: usize,
         /// Number of vertices.
         points: usize,
@@ -138,7 +138,7 @@ pub enum SubdivFitError {
 pub struct BestCurve {
     coordinates: Vec<f64>,
     dimension: usize,
-    sharp: Vec<bool>,
+    kinds: Vec<VertexKind>,
     closure: Closure,
     max_error: f64,
 }
@@ -152,7 +152,7 @@ impl BestCurve {
                 .flat_map(|p| p.iter().copied())
                 .collect(),
             dimension: D,
-            sharp: curve.sharp().to_vec(),
+            kinds: curve.kinds().to_vec(),
             closure: curve.closure(),
             max_error,
         }
@@ -173,7 +173,7 @@ impl BestCurve {
                 Vector::<D>::from(p)
             })
             .collect();
-        SubdivCurve::new(points, self.sharp.clone(), self.closure).ok()
+        SubdivCurve::new(points, self.kinds.clone(), self.closure).ok()
     }
 
     /// Its largest error (of the measure the fit drives below the tolerance).

@@ -18,6 +18,7 @@ use crate::insertion::{insert_points, segment_range};
 use crate::reduction::{MAX_REDUCED, fit_spans, reduce, respace_spans};
 use crate::seeding::seed;
 use crate::tridiagonal::solve_tridiagonal;
+use crate::vertex::VertexKind;
 use crate::{SubdivCurve, SubdivFitError};
 
 /// Which error the loop drives below the tolerance.
@@ -604,7 +605,7 @@ pub fn fit<const D: usize>(
 /// let opts = FitOptions::new(1e-3).with_sharp_angle(0.0); // only the corners given
 /// let f = fit_with_corners(&data, Closure::Closed, &[0, 60], &opts)?;
 /// let sharp: Vec<usize> = (0..f.fitting.len())
-///     .filter(|&j| f.curve.sharp()[j])
+///     .filter(|&j| f.curve.is_sharp(j))
 ///     .map(|j| f.fitting[j])
 ///     .collect();
 /// assert_eq!(sharp, [0, 60]);
@@ -946,7 +947,17 @@ pub(crate) fn solve_curve<const D: usize>(
     let p = solve_tridiagonal(&lower, &diag, &upper, &q, closed)
         .ok_or(SubdivFitError::SingularSystem { size: k })?;
     let points: Vec<Vector<D>> = p.into_iter().map(Vector::<D>::from).collect();
-    let curve = SubdivCurve::new(points, sharp, Closure::from_closed(closed))?;
+    let kinds = sharp
+        .iter()
+        .map(|&s| {
+            if s {
+                VertexKind::Sharp
+            } else {
+                VertexKind::Regular
+            }
+        })
+        .collect();
+    let curve = SubdivCurve::new(points, kinds, Closure::from_closed(closed))?;
     match options.mode {
         FitMode::Interpolate => Ok(if options.corner_tolerance.is_some() {
             let max_move = 0.25 * options.tolerance;
@@ -981,17 +992,17 @@ pub(crate) fn solve_curve<const D: usize>(
 }
 
 /// Coefficients of segment j's four B-spline control points on the polygon's vertices.
-pub(crate) fn segment_weights(sharp: &[bool], j: usize, w: [f64; 4]) -> [(usize, f64); 6] {
-    let k = sharp.len();
+pub(crate) fn segment_weights(kinds: &[VertexKind], j: usize, w: [f64; 4]) -> [(usize, f64); 6] {
+    let k = kinds.len();
     let i1 = (j + 1) % k;
     let prev = (j + k - 1) % k;
     let next = (i1 + 1) % k;
-    let a: [(usize, f64); 2] = if sharp[j] {
+    let a: [(usize, f64); 2] = if kinds[j].is_sharp() {
         [(j, 2.0 * w[0]), (i1, -w[0])]
     } else {
         [(prev, w[0]), (j, 0.0)]
     };
-    let d: [(usize, f64); 2] = if sharp[i1] {
+    let d: [(usize, f64); 2] = if kinds[i1].is_sharp() {
         [(i1, 2.0 * w[3]), (j, -w[3])]
     } else {
         [(next, w[3]), (i1, 0.0)]
@@ -1008,9 +1019,9 @@ fn least_squares<const D: usize>(
     keep: &[bool],
 ) -> Result<SubdivCurve<D>, SubdivFitError> {
     let n = data.len();
-    let sharp = curve.sharp();
-    let k = sharp.len();
-    let fixed = |j: usize| sharp[j] || keep[j];
+    let kinds = curve.kinds();
+    let k = kinds.len();
+    let fixed = |j: usize| kinds[j].is_sharp() || keep[j];
     let unknown: Vec<Option<usize>> = {
         let mut next = 0;
         (0..k)
@@ -1039,7 +1050,7 @@ fn least_squares<const D: usize>(
         for (off, t0) in chord.iter().enumerate() {
             let v = data[(a + off) % n];
             let (t, _) = cubic.foot(&v, *t0);
-            let row = segment_weights(sharp, j, bspline_basis(t));
+            let row = segment_weights(kinds, j, bspline_basis(t));
             let mut rhs = v;
             let mut coeffs: Vec<(usize, f64)> = Vec::with_capacity(6);
             for (idx, w) in row {
@@ -1072,5 +1083,5 @@ fn least_squares<const D: usize>(
     if !points.iter().all(|p| p.iter().all(|c| c.is_finite())) {
         return Err(SubdivFitError::SingularSystem { size: u });
     }
-    SubdivCurve::new(points, sharp.to_vec(), curve.closure())
+    SubdivCurve::new(points, curve.kinds().to_vec(), curve.closure())
 }

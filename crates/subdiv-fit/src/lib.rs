@@ -28,7 +28,7 @@
 //!     Vector2::new(0.0, 1.0),
 //! ];
 //! // One sharp corner, three smooth ones.
-//! let curve = SubdivCurve::new(square, vec![true, false, false, false], Closure::Closed)?;
+//! let curve = SubdivCurve::with_sharp(square, &[0], Closure::Closed)?;
 //! // A sharp vertex is interpolated; a regular one reaches (p_{i-1} + 4 p_i + p_{i+1}) / 6.
 //! assert_eq!(curve.eval(0.0)?, Vector2::new(0.0, 0.0));
 //! assert!((curve.eval(2.0)? - Vector2::new(5.0 / 6.0, 5.0 / 6.0)).norm() < 1e-15);
@@ -55,7 +55,7 @@
 //! let last = result.last().expect("one report per round");
 //! assert!(last.max_data_to_curve <= 0.01 && last.max_curve_to_data <= 0.01);
 //! // The corners are sharp control points sitting on their data points.
-//! assert_eq!(result.curve.sharp().iter().filter(|s| **s).count(), 4);
+//! assert_eq!(result.curve.kinds().iter().filter(|k| k.is_sharp()).count(), 4);
 //! let path = subdiv_fit::svg_path(&result.curve)?; // exact cubic Béziers
 //! assert!(path.starts_with("M "));
 //! # Ok::<(), subdiv_fit::SubdivFitError>(())
@@ -85,6 +85,7 @@ mod seeding;
 mod segment;
 mod svg;
 mod tridiagonal;
+mod vertex;
 
 pub use crate::bspline::{bspline_basis, bspline_basis_d1, bspline_basis_d2, bspline_to_bezier};
 pub use crate::corner_angles::CORNER_TOLERANCE;
@@ -105,6 +106,7 @@ pub use crate::path::{
 pub use crate::reduction::MAX_REDUCED;
 pub use crate::segment::Segment;
 pub use crate::svg::svg_path;
+pub use crate::vertex::VertexKind;
 pub use bez_core::{Vector, Vector2, Vector3};
 
 /// The README's example, compiled and run with the doctests.

@@ -65,7 +65,7 @@ pub(crate) fn reduce<const D: usize>(
         let segs = errors.len();
         // Regular points, those with the smallest error on their two segments first.
         let mut order: Vec<(f64, usize)> = (0..k)
-            .filter(|&j| !curve.sharp()[j])
+            .filter(|&j| !curve.is_sharp(j))
             .map(|j| {
                 let left = errors[(j + segs - 1) % segs];
                 let right = errors.get(j).copied().unwrap_or(0.0);
@@ -131,12 +131,12 @@ fn try_removal<const D: usize>(
             } else {
                 continue;
             };
-            if !interp.sharp()[t] && !free.contains(&t) {
+            if !interp.is_sharp(t) && !free.contains(&t) {
                 points[t] = interp.points()[t];
                 free.push(t);
             }
         }
-        let guess = SubdivCurve::new(points, interp.sharp().to_vec(), curve.closure()).ok()?;
+        let guess = SubdivCurve::new(points, interp.kinds().to_vec(), curve.closure()).ok()?;
         refit(data, &trial, guess, &free)?
     } else {
         solve_curve(data, &trial, closed, options).ok()?
@@ -239,8 +239,8 @@ pub(crate) fn respace_spans<const D: usize>(
     // The span ends are the sharp vertices, which re-spacing keeps.
     let sharp: Vec<(usize, bool)> = fitting
         .iter()
-        .zip(curve.sharp())
-        .map(|(f, &s)| (f.0, s))
+        .zip(curve.kinds())
+        .map(|(f, s)| (f.0, s.is_sharp()))
         .collect();
     for span in spans(&sharp, n, closed) {
         let inside = |i: usize| strictly_inside(i, span, n);
@@ -454,7 +454,7 @@ fn respaced_refit<const D: usize>(
     let mut points = interp.points().to_vec();
     let mut free = Vec::new();
     for (t, f) in trial.iter().enumerate() {
-        if inside(f.0) && !interp.sharp()[t] {
+        if inside(f.0) && !interp.is_sharp(t) {
             free.push(t);
         } else if let Ok(o) = fitting.binary_search_by_key(&f.0, |g| g.0) {
             points[t] = curve.points()[o];
@@ -465,7 +465,7 @@ fn respaced_refit<const D: usize>(
     if let Some(cut) = (1..free.len()).find(|&i| free[i] != free[i - 1] + 1) {
         free.rotate_left(cut);
     }
-    let guess = SubdivCurve::new(points, interp.sharp().to_vec(), curve.closure()).ok()?;
+    let guess = SubdivCurve::new(points, interp.kinds().to_vec(), curve.closure()).ok()?;
     refit(data, trial, guess, &free)
 }
 

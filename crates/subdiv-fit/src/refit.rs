@@ -32,7 +32,7 @@ pub(crate) fn shaped_segments<const D: usize>(
     free: &[usize],
 ) -> Vec<usize> {
     let k = curve.points().len();
-    let sharp = curve.sharp();
+    let sharp = curve.kinds();
     let mut is_free = vec![false; k];
     for &v in free {
         is_free[v] = true;
@@ -42,8 +42,8 @@ pub(crate) fn shaped_segments<const D: usize>(
             let e = (s + 1) % k;
             is_free[s]
                 || is_free[e]
-                || (!sharp[s] && is_free[(s + k - 1) % k])
-                || (!sharp[e] && is_free[(e + 1) % k])
+                || (!sharp[s].is_sharp() && is_free[(s + k - 1) % k])
+                || (!sharp[e].is_sharp() && is_free[(e + 1) % k])
         })
         .collect()
 }
@@ -62,7 +62,7 @@ pub(crate) fn refit<const D: usize>(
     let k = guess.points().len();
     let mut column = vec![None; k];
     for (col, &v) in free.iter().enumerate() {
-        if guess.sharp()[v] {
+        if guess.is_sharp(v) {
             return None;
         }
         column[v] = Some(col);
@@ -74,7 +74,7 @@ pub(crate) fn refit<const D: usize>(
     let segments = shaped_segments(&guess, free);
     let mut curve = guess;
     for _ in 0..ITERATIONS {
-        let sharp = curve.sharp();
+        let sharp = curve.kinds();
         let mut ata = CyclicBand::zeros(u);
         let mut atb = vec![[0.0; D]; u];
         for &s in &segments {
@@ -185,9 +185,7 @@ mod tests {
         .iter()
         .map(|&(x, y)| Vector2::new(x, y))
         .collect();
-        let mut sharp = vec![false; points.len()];
-        (sharp[0], sharp[4], sharp[8]) = (true, true, true);
-        let curve = SubdivCurve::new(points, sharp, Closure::Open).unwrap();
+        let curve = SubdivCurve::with_sharp(points, &[0, 4, 8], Closure::Open).unwrap();
         let per = 40;
         let mut data = Vec::new();
         for s in 0..curve.segment_count() {
@@ -197,7 +195,7 @@ mod tests {
         }
         data.push(*curve.points().last().unwrap());
         let fitting = (0..curve.points().len())
-            .map(|j| (j * per, curve.sharp()[j]))
+            .map(|j| (j * per, curve.is_sharp(j)))
             .collect();
         (curve, data, fitting)
     }
@@ -236,7 +234,7 @@ mod tests {
         for (m, &v) in free.iter().enumerate() {
             points[v] += Vector2::new(0.01 * (m as f64 + 1.0), -0.008);
         }
-        let guess = SubdivCurve::new(points, curve.sharp().to_vec(), Closure::Open).unwrap();
+        let guess = SubdivCurve::new(points, curve.kinds().to_vec(), Closure::Open).unwrap();
         let shaped = shaped_segments(&guess, &free);
         assert_eq!(shaped, [0, 1, 2, 3, 4, 5, 6]);
         let fitted = refit(&data, &fitting, guess.clone(), &free).unwrap();

@@ -26,7 +26,7 @@ use crate::curve::SubdivCurve;
 ///     Vector2::new(1.0, 1.0),
 ///     Vector2::new(0.0, 1.0),
 /// ];
-/// let curve = SubdivCurve::new(square, vec![true, false, false, false], Closure::Closed)?;
+/// let curve = SubdivCurve::with_sharp(square, &[0], Closure::Closed)?;
 /// let segment = curve.segment(1)?;
 /// assert_eq!(segment.index(), 1);
 /// assert!((segment.eval(0.3)? - curve.eval_segment(1, 0.3)?).norm() < 1e-15);

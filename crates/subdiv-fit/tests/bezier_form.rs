@@ -14,12 +14,7 @@ fn segments_match_the_bspline_evaluation_through_the_trait() {
         Vector2::new(1.5, 2.5),
         Vector2::new(-0.5, 1.5),
     ];
-    let curve = SubdivCurve::new(
-        polygon,
-        vec![true, false, false, true, false],
-        subdiv_fit::Closure::Closed,
-    )
-    .unwrap();
+    let curve = SubdivCurve::with_sharp(polygon, &[0, 3], subdiv_fit::Closure::Closed).unwrap();
     for i in 0..curve.segment_count() {
         let segment = curve.segment(i).unwrap();
         assert_eq!(segment.index(), i);

@@ -5,19 +5,22 @@ use subdiv_fit::eigen::{
     EIGENVALUES, eigenvectors, eigenvectors_inverse, eval_sharp_segment_eigen,
     extended_sharp_matrix, sharp_matrix,
 };
-use subdiv_fit::{SubdivCurve, SubdivFitError, Vector, Vector2, Vector3};
+use subdiv_fit::{SubdivCurve, SubdivFitError, Vector, Vector2, Vector3, VertexKind};
 
 fn polygon<const D: usize>(
     min: usize,
     max: usize,
-) -> impl Strategy<Value = (Vec<Vector<D>>, Vec<bool>, bool)> {
+) -> impl Strategy<Value = (Vec<Vector<D>>, Vec<VertexKind>, bool)> {
     (min..=max).prop_flat_map(|n| {
         (
             prop::collection::vec(
                 prop::array::uniform::<_, D>(-10.0..10.0f64).prop_map(Vector::from),
                 n,
             ),
-            prop::collection::vec(any::<bool>(), n),
+            prop::collection::vec(
+                prop_oneof![Just(VertexKind::Regular), Just(VertexKind::Sharp)],
+                n,
+            ),
             any::<bool>(),
         )
     })
@@ -64,7 +67,7 @@ proptest! {
     #[test]
     fn eigen_form_equals_collapsed_form(p in prop::array::uniform3(prop::array::uniform::<_, 2>(-5.0..5.0f64).prop_map(Vector2::from)), u in 0.0..=1.0f64) {
         // Sharp p0, regular p1 (and p2): segment 0 of an open polygon with p1 regular.
-        let c = SubdivCurve::new(vec![p[0], p[1], p[2]], vec![true, false, true], subdiv_fit::Closure::Open).unwrap();
+        let c = SubdivCurve::with_sharp(vec![p[0], p[1], p[2]], &[0, 2], subdiv_fit::Closure::Open).unwrap();
         let collapsed = c.eval_segment(0, u).unwrap();
         let eigen = eval_sharp_segment_eigen(&p, u).unwrap();
         prop_assert!((collapsed - eigen).norm() <= 1e-12 * (1.0 + collapsed.norm()));
@@ -101,7 +104,7 @@ proptest! {
             // C0 everywhere.
             prop_assert!((l.position - r.position).norm() <= tol);
             let v = next % n;
-            if !c.sharp()[v] {
+            if !c.is_sharp(v) {
                 // C2 at a regular vertex.
                 prop_assert!((l.first - r.first).norm() <= tol);
                 prop_assert!((l.second - r.second).norm() <= tol);
@@ -126,12 +129,7 @@ fn twelve_levels_of_refinement_converge_to_the_exact_curve() {
         Vector3::new(2.0, -2.0, 1.0),
         Vector3::new(0.5, -1.5, 0.0),
     ];
-    let c = SubdivCurve::new(
-        p,
-        vec![false, true, false, false, true, false],
-        subdiv_fit::Closure::Closed,
-    )
-    .unwrap();
+    let c = SubdivCurve::with_sharp(p, &[1, 4], subdiv_fit::Closure::Closed).unwrap();
     check_against_refinement(&c, 12, 1e-12);
     // The refined vertices themselves approach the curve at rate 4^-levels.
     let r = c.refine_levels(12).unwrap();
@@ -146,7 +144,7 @@ fn twelve_levels_of_refinement_converge_to_the_exact_curve() {
 fn sharp_sharp_segment_is_the_line_of_eq_2() {
     let a = Vector2::new(1.0, 2.0);
     let b = Vector2::new(4.0, -2.0);
-    let c = SubdivCurve::new(vec![a, b], vec![true, true], subdiv_fit::Closure::Open).unwrap();
+    let c = SubdivCurve::with_sharp(vec![a, b], &[0, 1], subdiv_fit::Closure::Open).unwrap();
     for k in 0..=8 {
         let u = k as f64 / 8.0;
         let x = c.eval_segment(0, u).unwrap();
@@ -172,12 +170,7 @@ fn eigen_decomposition_identities() {
         Vector2::new(2.0, 1.0),
         Vector2::new(3.0, 5.0),
     ];
-    let c = SubdivCurve::new(
-        p.to_vec(),
-        vec![true, false, true],
-        subdiv_fit::Closure::Open,
-    )
-    .unwrap();
+    let c = SubdivCurve::with_sharp(p.to_vec(), &[0, 2], subdiv_fit::Closure::Open).unwrap();
     let r = c.refine();
     for row in 0..3 {
         let expect = p[0] * a[(row, 0)] + p[1] * a[(row, 1)] + p[2] * a[(row, 2)];
@@ -193,12 +186,7 @@ fn limit_masks() {
         Vector2::new(6.0, 6.0),
         Vector2::new(0.0, 6.0),
     ];
-    let c = SubdivCurve::new(
-        p,
-        vec![false, false, true, false],
-        subdiv_fit::Closure::Closed,
-    )
-    .unwrap();
+    let c = SubdivCurve::with_sharp(p, &[2], subdiv_fit::Closure::Closed).unwrap();
     assert_eq!(c.eval(2.0).unwrap(), Vector2::new(6.0, 6.0));
     assert!((c.eval(1.0).unwrap() - Vector2::new(5.0, 1.0)).norm() < 1e-14);
     assert!((c.eval(0.0).unwrap() - Vector2::new(1.0, 1.0)).norm() < 1e-14);
@@ -208,15 +196,19 @@ fn limit_masks() {
 fn bad_input_gives_typed_errors() {
     let p = vec![Vector2::new(0.0, 0.0), Vector2::new(1.0, 0.0)];
     assert!(matches!(
-        SubdivCurve::new(p.clone(), vec![false; 2], subdiv_fit::Closure::Closed),
+        SubdivCurve::smooth(p.clone(), subdiv_fit::Closure::Closed),
         Err(SubdivFitError::TooFewPoints { got: 2, needed: 3 })
     ));
     assert!(matches!(
-        SubdivCurve::new(p[..1].to_vec(), vec![false], subdiv_fit::Closure::Open),
+        SubdivCurve::with_sharp(p[..1].to_vec(), &[], subdiv_fit::Closure::Open),
         Err(SubdivFitError::TooFewPoints { .. })
     ));
     assert!(matches!(
-        SubdivCurve::new(p.clone(), vec![false; 3], subdiv_fit::Closure::Open),
+        SubdivCurve::new(
+            p.clone(),
+            vec![VertexKind::Regular; 3],
+            subdiv_fit::Closure::Open
+        ),
         Err(SubdivFitError::FlagCount {
             flags: 3,
             points: 2
@@ -225,13 +217,17 @@ fn bad_input_gives_typed_errors() {
     assert!(matches!(
         SubdivCurve::new(
             vec![p[0], Vector2::new(f64::NAN, 0.0)],
-            vec![false; 2],
+            vec![VertexKind::Regular; 2],
             subdiv_fit::Closure::Open
         ),
         Err(SubdivFitError::NonFinite { index: 1 })
     ));
-    let c = SubdivCurve::new(p, vec![false; 2], subdiv_fit::Closure::Open).unwrap();
-    assert_eq!(c.sharp(), &[true, true]);
+    assert!(matches!(
+        SubdivCurve::with_sharp(p.clone(), &[2], subdiv_fit::Closure::Open),
+        Err(SubdivFitError::SegmentOutOfRange { index: 2, count: 2 })
+    ));
+    let c = SubdivCurve::smooth(p, subdiv_fit::Closure::Open).unwrap();
+    assert_eq!(c.kinds(), &[VertexKind::Sharp, VertexKind::Sharp]);
     assert!(matches!(
         c.eval(1.5),
         Err(SubdivFitError::ParameterOutOfRange { .. })
@@ -258,7 +254,7 @@ fn svg_path_has_one_cubic_per_segment() {
         Vector2::new(1.0, 0.0),
         Vector2::new(1.0, 1.0),
     ];
-    let c = SubdivCurve::new(p, vec![false; 3], subdiv_fit::Closure::Closed).unwrap();
+    let c = SubdivCurve::smooth(p, subdiv_fit::Closure::Closed).unwrap();
     let s = subdiv_fit::svg_path(&c).unwrap();
     assert_eq!(s.matches(" C ").count(), 3);
     assert!(s.starts_with("M ") && s.ends_with(" Z"));

@@ -38,12 +38,7 @@ fn recovers_data_sampled_from_a_subdivision_curve() {
         Vector2::new(-1.0, 3.0),
         Vector2::new(-2.0, 1.0),
     ];
-    let truth = SubdivCurve::new(
-        ctrl,
-        vec![false, false, true, false, false, false],
-        subdiv_fit::Closure::Closed,
-    )
-    .unwrap();
+    let truth = SubdivCurve::with_sharp(ctrl, &[2], subdiv_fit::Closure::Closed).unwrap();
     let per = 24;
     let count = truth.segment_count() * per;
     let data: Vec<Vector2> = (0..count)
@@ -56,8 +51,8 @@ fn recovers_data_sampled_from_a_subdivision_curve() {
     all_within(&data, &f, tol);
     // The corner of the truth (vertex 2, data index 2 * per) is a sharp fitting point.
     let pos = f.fitting.iter().position(|&i| i == 2 * per).unwrap();
-    assert!(f.curve.sharp()[pos]);
-    assert_eq!(f.curve.sharp().iter().filter(|s| **s).count(), 1);
+    assert!(f.curve.is_sharp(pos));
+    assert_eq!(f.curve.kinds().iter().filter(|k| k.is_sharp()).count(), 1);
     // Recovery: samples of the truth (between the data points too) are close to the fitted curve.
     let mut dense = Vec::new();
     let params: Vec<f64> = (0..=8000)
@@ -83,7 +78,7 @@ fn test_shapes_converge_with_corners_sharp() {
             assert_eq!(r.control_points, f.curve.points().len());
             // Sharp control points sit exactly on sharp data points (corners, ends).
             for (j, &i) in f.fitting.iter().enumerate() {
-                if f.curve.sharp()[j] {
+                if f.curve.is_sharp(j) {
                     assert_eq!(f.curve.points()[j], data[i]);
                 }
             }
@@ -98,7 +93,7 @@ fn test_shapes_converge_with_corners_sharp() {
     .unwrap();
     for corner in [0, 16, 32, 48] {
         let j = f.fitting.iter().position(|&i| i == corner).unwrap();
-        assert!(f.curve.sharp()[j], "corner {corner}");
+        assert!(f.curve.is_sharp(j), "corner {corner}");
     }
     // The open shape's kinks at data indices 22 and 44, and its ends.
     let f = fit(
@@ -109,7 +104,7 @@ fn test_shapes_converge_with_corners_sharp() {
     .unwrap();
     for corner in [0, 22, 44, 65] {
         let j = f.fitting.iter().position(|&i| i == corner).unwrap();
-        assert!(f.curve.sharp()[j], "corner {corner}");
+        assert!(f.curve.is_sharp(j), "corner {corner}");
     }
 }
 
@@ -259,7 +254,7 @@ fn converges_cleanly(data: &[Vector2], mode: FitMode, max_rounds: usize) {
     all_within(data, &f, tol);
     // Inserted points are regular: the sharp vertices are exactly the initial sharp ones.
     let sharp_now: Vec<usize> = (0..f.fitting.len())
-        .filter(|&j| f.curve.sharp()[j])
+        .filter(|&j| f.curve.is_sharp(j))
         .map(|j| f.fitting[j])
         .collect();
     let sharp_initial = scaled_corners(data, subdiv_fit::Closure::Closed, &opts).unwrap();
@@ -323,7 +318,7 @@ fn fits_space_curves() {
     assert!(r.max_data_to_curve <= 0.01 && r.max_curve_to_data <= 0.01);
     for corner in [0, 16, 32, 48] {
         let j = f.fitting.iter().position(|&i| i == corner).unwrap();
-        assert!(f.curve.sharp()[j]);
+        assert!(f.curve.is_sharp(j));
         assert_eq!(f.curve.points()[j], data[corner]);
     }
 }
@@ -353,7 +348,7 @@ fn no_convergence_returns_the_best_curve_with_its_error() {
         assert_eq!(best.max_error(), smallest, "cap {cap}");
         assert!(best.max_error() <= max_error && best.max_error() > tol);
         let curve = best.curve::<2>().expect("the data's dimension");
-        assert_eq!(curve.points().len(), curve.sharp().len());
+        assert_eq!(curve.points().len(), curve.kinds().len());
         if cap == 3 {
             curve_within(&data, &curve, best.max_error());
         }

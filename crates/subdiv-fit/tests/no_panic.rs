@@ -15,7 +15,7 @@ use subdiv_fit::{
     BestCurve, CORNER_TOLERANCE, Closure, CurvePoint, ErrorMeasure, FeaturePoint, Fit, FitMode,
     FitOptions, Insertion, MAX_DATA_COORDINATE, MAX_FEATURE_SCALE, MAX_FIT_POINTS, MAX_REDUCED,
     MAX_ROUNDS, MAX_SAMPLES_PER_SEGMENT, Reduction, RoundReport, SCALE_RATIO, Seeding, Segment,
-    SubdivCurve, SubdivFitError, Vector2, Vector3, bspline_basis, bspline_basis_d1,
+    SubdivCurve, SubdivFitError, Vector2, Vector3, VertexKind, bspline_basis, bspline_basis_d1,
     bspline_basis_d2, bspline_to_bezier, discrete_curvature, feature_points, fit, fit_with_corners,
     foot_point, point_polyline_distance, scaled_corners, svg_path, turning_angle,
 };
@@ -214,9 +214,15 @@ proptest! {
         prop_assert_eq!(closure.is_closed(), closed);
         let n = pts.len();
         let _ = SubdivCurve::smooth(pts.clone(), closure);
-        let mut sharp = flags.clone();
-        sharp.resize(n, false);
-        let c = match SubdivCurve::new(pts.clone(), flags.clone(), closure) {
+        let kinds: Vec<VertexKind> = flags
+            .iter()
+            .map(|&f| if f { VertexKind::Sharp } else { VertexKind::Regular })
+            .collect();
+        let mut sharp = kinds.clone();
+        sharp.resize(n, VertexKind::Regular);
+        let sharp_indices: Vec<usize> = (0..flags.len()).filter(|&j| flags[j]).collect();
+        let _ = SubdivCurve::with_sharp(pts.clone(), &sharp_indices, closure);
+        let c = match SubdivCurve::new(pts.clone(), kinds, closure) {
             Ok(c) => c,
             Err(_) => match SubdivCurve::new(pts, sharp, closure) {
                 Ok(c) => c,
@@ -224,7 +230,8 @@ proptest! {
             },
         };
         prop_assert!(curve_ok(&c));
-        prop_assert_eq!(c.sharp().len(), c.points().len());
+        prop_assert_eq!(c.kinds().len(), c.points().len());
+        prop_assert_eq!(c.is_sharp(i), c.kinds().get(i).is_some_and(|k| k.is_sharp()));
         prop_assert_eq!(c.is_closed(), c.closure().is_closed());
         let segs = c.segment_count();
         prop_assert!(segs >= 1);
@@ -475,13 +482,15 @@ fn limits_are_checked_before_work() {
 #[test]
 fn invariant_violating_json_is_refused() {
     for bad in [
-        r#"{"points":[],"sharp":[],"closed":true}"#,
-        r#"{"points":[[0,0],[1,0]],"sharp":[false,false],"closed":true}"#,
-        r#"{"points":[[0,0],[1,0],[1,1]],"sharp":[false],"closed":true}"#,
-        r#"{"points":[[0,0],[1e200,0],[1,1]],"sharp":[false,false,false],"closed":true}"#,
-        r#"{"points":[[0,0],[1e999,0],[1,1]],"sharp":[false,false,false],"closed":true}"#,
-        r#"{"points":[[0,0,0],[1,0,0],[1,1,0]],"sharp":[false,false,false],"closed":true}"#,
-        r#"{"points":[[0,0],[1,0],[1,1]],"sharp":[false,false,false]}"#,
+        r#"{"points":[],"kinds":[],"closed":true}"#,
+        r#"{"points":[[0,0],[1,0]],"kinds":["Regular","Regular"],"closed":true}"#,
+        r#"{"points":[[0,0],[1,0],[1,1]],"kinds":["Regular"],"closed":true}"#,
+        r#"{"points":[[0,0],[1e200,0],[1,1]],"kinds":["Regular","Regular","Regular"],"closed":true}"#,
+        r#"{"points":[[0,0],[1e999,0],[1,1]],"kinds":["Regular","Regular","Regular"],"closed":true}"#,
+        r#"{"points":[[0,0,0],[1,0,0],[1,1,0]],"kinds":["Regular","Regular","Regular"],"closed":true}"#,
+        r#"{"points":[[0,0],[1,0],[1,1]],"kinds":["Regular","Regular","Regular"]}"#,
+        r#"{"points":[[0,0],[1,0],[1,1]],"kinds":["Regular","Blunt","Regular"],"closed":true}"#,
+        r#"{"points":[[0,0],[1,0],[1,1]],"sharp":[false,false,false],"closed":true}"#,
         r#"[1,2,3]"#,
     ] {
         assert!(
@@ -489,9 +498,10 @@ fn invariant_violating_json_is_refused() {
             "{bad}"
         );
     }
-    let good = r#"{"points":[[0,0],[1,0],[1,1]],"sharp":[false,true,false],"closed":false}"#;
+    let good =
+        r#"{"points":[[0,0],[1,0],[1,1]],"kinds":["Regular","Sharp","Regular"],"closed":false}"#;
     let c: SubdivCurve<2> = serde_json::from_str(good).unwrap();
-    assert_eq!(c.sharp(), [true, true, true]);
+    assert_eq!(c.kinds(), [VertexKind::Sharp; 3]);
     let round: SubdivCurve<2> = serde_json::from_str(&serde_json::to_string(&c).unwrap()).unwrap();
     assert_eq!(round, c);
     for bad in [r#""Sideways""#, "3", "null"] {

@@ -118,7 +118,7 @@ fn a_circle_needs_about_ten_control_points() {
     let f = fit(&data, Closure::Closed, &FitOptions::new(1e-3)).unwrap();
     let k = f.curve.points().len();
     assert!((8..=16).contains(&k), "{k} control points");
-    assert!(f.curve.sharp().iter().all(|s| !s));
+    assert!(f.curve.kinds().iter().all(|k| !k.is_sharp()));
 }
 
 /// 100,000 points with uniform radial noise of 2.5e-4 (a quarter of the tolerance): least squares
@@ -135,7 +135,7 @@ fn noisy_circle_of_100k_points_fits_with_a_count_of_the_shape() {
         .unwrap();
         let k = f.curve.points().len();
         assert!((8..=40).contains(&k), "{mode:?}: {k} control points");
-        assert!(f.curve.sharp().iter().all(|s| !s), "{mode:?}");
+        assert!(f.curve.kinds().iter().all(|k| !k.is_sharp()), "{mode:?}");
         // The curve stays near the noiseless circle.
         for s in 0..=200 {
             let p = f.curve.eval(s as f64 * k as f64 / 200.0).unwrap();
@@ -211,7 +211,7 @@ fn point_removal_keeps_the_tolerance() {
                 "{r:?}"
             );
             let sharp: Vec<usize> = (0..k)
-                .filter(|&j| f.curve.sharp()[j])
+                .filter(|&j| f.curve.is_sharp(j))
                 .map(|j| f.fitting[j])
                 .collect();
             assert_eq!(sharp, corners);
@@ -252,7 +252,7 @@ fn corner_error(f: &subdiv_fit::Fit<2>, corners: &[usize]) -> f64 {
         .zip([120.0_f64, 90.0, 30.0])
         .map(|(&c, exact)| {
             let j = f.fitting.iter().position(|&i| i == c).unwrap();
-            assert!(f.curve.sharp()[j]);
+            assert!(f.curve.is_sharp(j));
             (polygon_turn(f.curve.points(), j) - exact).abs()
         })
         .fold(0.0, f64::max)
@@ -311,7 +311,7 @@ fn respacing_a_circle_keeps_a_closed_polygon() {
             let respaced = fit(&data, Closure::Closed, &opts.with_reduction(reduction)).unwrap();
             let k = respaced.curve.points().len();
             assert!(k >= 3 && k <= removed.curve.points().len(), "{tol}: {k}");
-            assert!(respaced.curve.sharp().iter().all(|&s| !s));
+            assert!(respaced.curve.kinds().iter().all(|k| !k.is_sharp()));
             let r = respaced.last().unwrap();
             assert!(
                 r.max_data_to_curve <= tol && r.max_curve_to_data <= tol,

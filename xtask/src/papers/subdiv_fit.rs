@@ -79,7 +79,7 @@ fn fit_table() -> Result<Table, DynError> {
             let f = fit(&data, subdiv_fit::Closure::from_closed(closed), &opts)?;
             let r = f.last().ok_or("empty report")?;
             let sharp0 = f.initial.len();
-            let sharp_count = f.curve.sharp().iter().filter(|s| **s).count();
+            let sharp_count = f.curve.kinds().iter().filter(|k| k.is_sharp()).count();
             writeln!(
                 md,
                 "| {name} | {} | {sharp0} ({sharp_count}) | {cfg} | {} | {} | {:.5} | {:.5} | {:.5} | {paper_rounds} |",
@@ -129,7 +129,7 @@ fn density_table() -> Result<Table, DynError> {
             )?)
         })?;
         let r = f.last().ok_or("empty report")?;
-        let sharp = f.curve.sharp().iter().filter(|s| **s).count();
+        let sharp = f.curve.kinds().iter().filter(|k| k.is_sharp()).count();
         writeln!(
             md,
             "| {} | {} | {sharp} | {:.5} | {:.5} | {:.2} |",

@@ -161,7 +161,7 @@ fn subdiv_fit_totals(glyphs: &[Glyph], tol: f64, opts: &FitOptions) -> Result<To
         for (f, c) in fits.iter().zip(&corners) {
             t.points += f.curve.points().len();
             let sharp: Vec<usize> = (0..f.fitting.len())
-                .filter(|&j| f.curve.sharp()[j])
+                .filter(|&j| f.curve.is_sharp(j))
                 .map(|j| f.fitting[j])
                 .collect();
             t.corners += c.corners.len();

@@ -1,0 +1,33 @@
+//! The kind of a control-polygon vertex: how the limit curve behaves there.
+
+/// How the limit curve behaves at a vertex of the control polygon (Sec. 2.1 and beyond).
+///
+/// ```
+/// use subdiv_fit::{Closure, SubdivCurve, Vector2, VertexKind};
+///
+/// let points = vec![Vector2::new(0.0, 0.0), Vector2::new(1.0, 1.0), Vector2::new(2.0, 0.0)];
+/// let curve = SubdivCurve::with_sharp(points, &[1], Closure::Closed)?;
+/// assert_eq!(curve.kinds(), [VertexKind::Regular, VertexKind::Sharp, VertexKind::Regular]);
+/// assert!(curve.is_sharp(1));
+/// # Ok::<(), subdiv_fit::SubdivFitError>(())
+/// ```
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, Default)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
+#[non_exhaustive]
+pub enum VertexKind {
+    /// A regular vertex: the curve is C2 there, its refinement rule is
+    /// `(p_{i-1} + 6 p_i + p_{i+1}) / 8` and its limit `(p_{i-1} + 4 p_i + p_{i+1}) / 6`.
+    #[default]
+    Regular,
+    /// A sharp vertex (a corner): kept by refinement and interpolated by the limit curve, whose
+    /// one-sided tangents there are the polygon edges.
+    Sharp,
+}
+
+impl VertexKind {
+    /// `true` for [`VertexKind::Sharp`].
+    #[must_use]
+    pub fn is_sharp(self) -> bool {
+        self == Self::Sharp
+    }
+}

@@ -47,3 +47,13 @@ pub fn bspline_to_bezier<const D: usize>(ctrl: &[Vector<D>; 4]) -> [Vector<D>; 4
         (b + 4.0 * c + d) / 6.0,
     ]
 }
+
+/// The inverse of [`bspline_to_bezier`]: the uniform cubic B-spline control points
+/// `(6 B₀ − 4b − c, b, c, 6 B₃ − b − 4c)` with `b = 2 B₁ − B₂`, `c = 2 B₂ − B₁` of the cubic with
+/// Bézier points `B`; every cubic on `[0, 1]` has exactly one such form.
+pub(crate) fn bezier_to_bspline<const D: usize>(bez: &[Vector<D>; 4]) -> [Vector<D>; 4] {
+    let [b0, b1, b2, b3] = *bez;
+    let b = 2.0 * b1 - b2;
+    let c = 2.0 * b2 - b1;
+    [6.0 * b0 - 4.0 * b - c, b, c, 6.0 * b3 - b - 4.0 * c]
+}

@@ -4,14 +4,19 @@
 use bez_core::{BezierCurve, MAX_COORDINATE, Vector};
 
 use crate::SubdivFitError;
-use crate::bspline::{bspline_basis, bspline_basis_d1, bspline_basis_d2, bspline_to_bezier};
+use crate::bspline::{
+    bezier_to_bspline, bspline_basis, bspline_basis_d1, bspline_basis_d2, bspline_to_bezier,
+};
+use crate::tangent;
 use crate::vertex::VertexKind;
 
 /// A control polygon, open or closed, with one [`VertexKind`] per vertex.
 ///
 /// Its limit curve under the rules of Sec. 2.1 has one segment per polygon edge:
 /// segment `i` runs from the limit position of `p_i` to that of `p_{i+1}`
-/// (indices modulo `n` for a closed polygon).
+/// (indices modulo `n` for a closed polygon), except that the edge after a
+/// [`VertexKind::Tangent`] vertex has no segment (its knot is double; segments are then numbered
+/// along the curve, skipping those edges).
 /// Both end vertices of an open polygon are sharp, whatever kind is given.
 #[derive(Debug, Clone, PartialEq)]
 #[cfg_attr(
@@ -23,6 +28,8 @@ pub struct SubdivCurve<const D: usize> {
     points: Vec<Vector<D>>,
     kinds: Vec<VertexKind>,
     closure: Closure,
+    /// The tangent vertices, increasing (derived from `kinds`).
+    tangents: Vec<usize>,
 }
 
 /// Whether a control polygon (and its limit curve) is open or closed.
@@ -96,10 +103,14 @@ impl<const D: usize> SubdivCurve<D> {
     ///
     /// An open polygon needs at least 2 vertices, a closed one at least 3.
     /// The end vertices of an open polygon are made sharp.
+    /// A [`VertexKind::Tangent`] vertex needs room for its double knot: no sharp vertex from two
+    /// before it to three after it, no tangent neighbour, at least 6 vertices in a closed polygon
+    /// and 3 before it and 4 after it in an open one.
     ///
     /// # Errors
     /// [`SubdivFitError::TooFewPoints`], [`SubdivFitError::NonFinite`],
-    /// [`SubdivFitError::FlagCount`]; [`SubdivFitError::Core`] with
+    /// [`SubdivFitError::FlagCount`], [`SubdivFitError::InvalidTangent`];
+    /// [`SubdivFitError::Core`] with
     /// [`CoordinateOutOfRange`](bez_core::CoreError::CoordinateOutOfRange) for a coordinate beyond
     /// ±`MAX_COORDINATE`.
     pub fn new(
@@ -127,10 +138,12 @@ impl<const D: usize> SubdivCurve<D> {
             let last = kinds.len() - 1;
             kinds[last] = VertexKind::Sharp;
         }
+        let tangents = tangent::check_tangents(&kinds, closed)?;
         Ok(Self {
             points,
             kinds,
             closure,
+            tangents,
         })
     }
 
@@ -194,9 +207,15 @@ impl<const D: usize> SubdivCurve<D> {
         self.closure.is_closed()
     }
 
-    /// Number of limit-curve segments: `n` if closed, `n - 1` if open.
+    /// Number of limit-curve segments: `n` if closed, `n - 1` if open, less one per tangent
+    /// vertex.
     #[must_use]
     pub fn segment_count(&self) -> usize {
+        self.edge_count() - self.tangents.len()
+    }
+
+    /// Number of polygon edges: `n` if closed, `n - 1` if open.
+    fn edge_count(&self) -> usize {
         if self.closure.is_closed() {
             self.points.len()
         } else {
@@ -207,11 +226,25 @@ impl<const D: usize> SubdivCurve<D> {
     /// One level of the refinement of Sec. 2.1:
     /// E-vertex `(p_i + p_{i+1}) / 2`, regular V-vertex `(p_{i-1} + 6 p_i + p_{i+1}) / 8`,
     /// sharp V-vertex `p_i`.
-    /// V-vertices keep their flag; E-vertices are regular.
+    /// V-vertices keep their kind; E-vertices are regular.
+    /// Next to a tangent vertex the rules are those of knot insertion at the middle of every
+    /// segment (the double knot stays double and the edge after it gets no E-vertex).
     #[must_use]
     pub fn refine(&self) -> Self {
+        if !self.tangents.is_empty() {
+            let (points, kinds) = tangent::refine_with_tangents(self);
+            let tangents = (0..kinds.len())
+                .filter(|&i| kinds[i] == VertexKind::Tangent)
+                .collect();
+            return Self {
+                points,
+                kinds,
+                closure: self.closure,
+                tangents,
+            };
+        }
         let n = self.points.len();
-        let edges = self.segment_count();
+        let edges = self.edge_count();
         let mut points = Vec::with_capacity(n + edges);
         let mut kinds = Vec::with_capacity(n + edges);
         for i in 0..n {
@@ -235,6 +268,7 @@ impl<const D: usize> SubdivCurve<D> {
             points,
             kinds,
             closure: self.closure,
+            tangents: Vec::new(),
         }
     }
 
@@ -247,7 +281,7 @@ impl<const D: usize> SubdivCurve<D> {
     pub fn refine_levels(&self, levels: usize) -> Result<Self, SubdivFitError> {
         let max = crate::MAX_FIT_POINTS;
         let edges = self.segment_count();
-        let open_end = usize::from(!self.is_closed());
+        let open_end = usize::from(!self.is_closed()) + self.tangents.len();
         let fits = u32::try_from(levels)
             .ok()
             .and_then(|l| edges.checked_mul(1usize.checked_shl(l)?))
@@ -272,7 +306,9 @@ impl<const D: usize> SubdivCurve<D> {
     }
 
     /// The limit position of vertex `i` (the limit mask):
-    /// `(p_{i-1} + 4 p_i + p_{i+1}) / 6` for a regular vertex, `p_i` for a sharp one.
+    /// `(p_{i-1} + 4 p_i + p_{i+1}) / 6` for a regular vertex, `p_i` for a sharp one; next to a
+    /// double knot the curve at the vertex's knot (a tangent vertex and the vertex after it share
+    /// the joint, `(p_v + p_{v+1}) / 2`).
     ///
     /// # Errors
     /// [`SubdivFitError::SegmentOutOfRange`] if `i` is not a vertex.
@@ -280,6 +316,11 @@ impl<const D: usize> SubdivCurve<D> {
         let n = self.points.len();
         if i >= n {
             return Err(SubdivFitError::SegmentOutOfRange { index: i, count: n });
+        }
+        if !self.tangents.is_empty()
+            && let Some(p) = tangent::vertex_limit(self, i)
+        {
+            return Ok(p);
         }
         Ok(if self.kinds[i].is_sharp() {
             self.points[i]
@@ -295,6 +336,9 @@ impl<const D: usize> SubdivCurve<D> {
     /// `2 p_i − p_{i+1}`; and `d = p_{i+2}` if `p_{i+1}` is regular, else `2 p_{i+1} − p_i`.
     /// With two sharp ends the four points are equally spaced on a line and the segment is the
     /// line `(1 − u) p_i + u p_{i+1}` of eq. (2); with two regular ends it is eq. (1).
+    /// A segment whose knots include the double knot of a tangent vertex is a cubic of the
+    /// non-uniform B-spline; its four points are then the unique uniform B-spline form of that
+    /// cubic (from its Bézier points, see [`SubdivCurve::segment_bezier`]).
     ///
     /// # Errors
     /// [`SubdivFitError::SegmentOutOfRange`].
@@ -303,6 +347,19 @@ impl<const D: usize> SubdivCurve<D> {
         if i >= count {
             return Err(SubdivFitError::SegmentOutOfRange { index: i, count });
         }
+        if self.tangents.is_empty() {
+            return Ok(self.uniform_controls(i));
+        }
+        let e = tangent::edge_of_segment(&self.tangents, i);
+        Ok(if tangent::span_is_uniform(self, e) {
+            self.uniform_controls(e)
+        } else {
+            bezier_to_bspline(&tangent::span_bezier_points(self, e))
+        })
+    }
+
+    /// The closed form on edge `i` with uniform knots around it.
+    fn uniform_controls(&self, i: usize) -> [Vector<D>; 4] {
         let n = self.points.len();
         let j = (i + 1) % n;
         let (b, c) = (self.points[i], self.points[j]);
@@ -316,7 +373,7 @@ impl<const D: usize> SubdivCurve<D> {
         } else {
             self.points[(j + 1) % n]
         };
-        Ok([a, b, c, d])
+        [a, b, c, d]
     }
 
     /// Position of segment `i` at its local parameter `u ∈ [0, 1]`.
@@ -368,7 +425,8 @@ impl<const D: usize> SubdivCurve<D> {
         Ok((i, s - i as f64))
     }
 
-    /// Position at the global parameter `s ∈ [0, segment_count]`: vertex `i`'s limit is at `s = i`.
+    /// Position at the global parameter `s ∈ [0, segment_count]`: vertex `i`'s limit is at `s = i`
+    /// (with tangent vertices at its knot `k_i`, which does not advance after a tangent vertex).
     ///
     /// # Errors
     /// [`SubdivFitError::ParameterOutOfRange`].
@@ -414,7 +472,8 @@ impl<const D: usize> SubdivCurve<D> {
         Ok(())
     }
 
-    /// Segment `i` as an exact cubic Bézier curve.
+    /// Segment `i` as an exact cubic Bézier curve (next to a tangent vertex: the non-uniform
+    /// segment with its knots inserted to full multiplicity).
     ///
     /// # Errors
     /// [`SubdivFitError::SegmentOutOfRange`].

@@ -120,6 +120,14 @@ pub enum SubdivFitError {
         /// The parser's message.
         reason: String,
     },
+    /// A tangent vertex without room for its double knot (see [`SubdivCurve::new`]).
+    #[error("vertex {index} cannot be a tangent vertex: {reason}")]
+    InvalidTangent {
+        /// The vertex.
+        index: usize,
+        /// What it lacks.
+        reason: &'static str,
+    },
     /// A given corner index is not a data index.
     #[error("corner index {index} is outside the {points} data points")]
     CornerOutOfRange {

@@ -77,6 +77,7 @@ pub mod eigen;
 mod error;
 mod fit;
 mod insertion;
+mod knots;
 #[cfg(feature = "kurbo")]
 mod path;
 mod reduction;
@@ -84,6 +85,7 @@ mod refit;
 mod seeding;
 mod segment;
 mod svg;
+mod tangent;
 mod tridiagonal;
 mod vertex;
 

@@ -22,6 +22,14 @@ pub enum VertexKind {
     /// A sharp vertex (a corner): kept by refinement and interpolated by the limit curve, whose
     /// one-sided tangents there are the polygon edges.
     Sharp,
+    /// A tangent vertex: its knot is doubled with the next vertex's (the cubic B-spline with a
+    /// double knot), so the curve is C1 there in its parameter, with its tangent along the edge
+    /// `p_{i+1} − p_i`, and its curvature is free on each side (it may jump, as where a line
+    /// meets an arc tangentially). The curve passes through the edge's midpoint
+    /// `(p_i + p_{i+1}) / 2`, not through `p_i`, and that edge has no segment of its own.
+    /// Refinement next to it inserts knots (Boehm); evaluation is exact (de Boor), and so is the
+    /// Bézier form. Sharp vertices must stay three vertices away (see [`crate::SubdivCurve::new`]).
+    Tangent,
 }
 
 impl VertexKind {

@@ -205,7 +205,7 @@ proptest! {
     #[test]
     fn curves_never_panic(
         pts in wild_points(9),
-        flags in proptest::collection::vec(any::<bool>(), 0..12),
+        flags in proptest::collection::vec(0u8..3, 0..12),
         closed in any::<bool>(),
         s in wild(), u in wild(), i in 0usize..12, levels in prop_oneof![0usize..4, Just(30), Just(usize::MAX)],
         q in (wild(), wild()),
@@ -216,11 +216,15 @@ proptest! {
         let _ = SubdivCurve::smooth(pts.clone(), closure);
         let kinds: Vec<VertexKind> = flags
             .iter()
-            .map(|&f| if f { VertexKind::Sharp } else { VertexKind::Regular })
+            .map(|&f| match f {
+                0 => VertexKind::Regular,
+                1 => VertexKind::Sharp,
+                _ => VertexKind::Tangent,
+            })
             .collect();
         let mut sharp = kinds.clone();
         sharp.resize(n, VertexKind::Regular);
-        let sharp_indices: Vec<usize> = (0..flags.len()).filter(|&j| flags[j]).collect();
+        let sharp_indices: Vec<usize> = (0..flags.len()).filter(|&j| flags[j] == 1).collect();
         let _ = SubdivCurve::with_sharp(pts.clone(), &sharp_indices, closure);
         let c = match SubdivCurve::new(pts.clone(), kinds, closure) {
             Ok(c) => c,

@@ -5,7 +5,8 @@
 //! (带尖锐特征的细分曲线参数化及曲线拟合).
 //! Journal of Image and Graphics 13(8), 2008, 1554–1559.
 //!
-//! Cubic B-spline subdivision curves whose vertices may be flagged sharp ([`SubdivCurve`]),
+//! Cubic B-spline subdivision curves whose vertices may be sharp or, beyond the paper, tangent
+//! (a double knot: G1 with a curvature jump) ([`SubdivCurve`], [`VertexKind`]),
 //! their refinement (Sec. 2.1), their exact evaluation at any parameter with first and second
 //! derivatives (Sec. 2.2), exact conversion of every segment to a cubic Bézier curve, and the
 //! adaptive fitting of such curves to ordered data points (Secs. 3–5, [`fit`]), with a per-round

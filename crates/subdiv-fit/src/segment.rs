@@ -5,7 +5,8 @@ use bez_core::{BezierCurve, BezierForm, Vector};
 use crate::SubdivFitError;
 use crate::curve::SubdivCurve;
 
-/// Segment `i` of a [`SubdivCurve`]: the piece from the limit of `p_i` to that of `p_{i+1}`,
+/// Segment `i` of a [`SubdivCurve`]: the piece from the limit of `p_i` to that of `p_{i+1}`
+/// (after a tangent vertex, whose next edge has no segment, of the next edge along the curve),
 /// on its local parameter u ∈ [0, 1].
 ///
 /// It keeps the segment's four uniform cubic B-spline control points
@@ -47,7 +48,8 @@ impl<const D: usize> Segment<D> {
         self.index
     }
 
-    /// The four uniform cubic B-spline control points (phantom points at sharp vertices).
+    /// The four uniform cubic B-spline control points (phantom points at sharp vertices; next to
+    /// a tangent vertex the uniform form of the segment's cubic).
     #[must_use]
     pub fn controls(&self) -> &[Vector<D>; 4] {
         &self.controls

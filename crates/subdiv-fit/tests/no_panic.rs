@@ -226,7 +226,14 @@ proptest! {
         sharp.resize(n, VertexKind::Regular);
         let sharp_indices: Vec<usize> = (0..flags.len()).filter(|&j| flags[j] == 1).collect();
         let _ = SubdivCurve::with_sharp(pts.clone(), &sharp_indices, closure);
-        let c = match SubdivCurve::new(pts.clone(), kinds, closure) {
+        // Random kinds rarely leave a tangent vertex room for its double knot: when they fail,
+        // every fourth vertex from the fourth on is a tangent vertex, else the flags are padded.
+        let tangents: Vec<VertexKind> = (0..n)
+            .map(|j| if j % 4 == 3 { VertexKind::Tangent } else { VertexKind::Regular })
+            .collect();
+        let c = match SubdivCurve::new(pts.clone(), kinds, closure)
+            .or_else(|_| SubdivCurve::new(pts.clone(), tangents, closure))
+        {
             Ok(c) => c,
             Err(_) => match SubdivCurve::new(pts, sharp, closure) {
                 Ok(c) => c,

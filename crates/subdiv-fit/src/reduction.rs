@@ -109,8 +109,9 @@ pub(crate) fn reduce<const D: usize>(
     removed
 }
 
-/// The spans between consecutive sharp fitting points, numbered in polygon order by the data
-/// index of the sharp point that starts them (a closed polygon without one is a single span).
+/// The spans between consecutive sharp fitting points, numbered in polygon order from the first
+/// sharp point (a closed polygon without one is a single span); the sharp points are never
+/// removed, so their data indices find a point's span throughout the removal.
 struct SpanIndex {
     /// Data indices of the sharp points, increasing.
     starts: Vec<usize>,
@@ -561,10 +562,35 @@ fn respaced_refit<const D: usize>(
 
 #[cfg(test)]
 mod tests {
-    use super::{Spacing, fit_spans, lowest_count};
+    use super::{Spacing, SpanIndex, fit_spans, lowest_count};
     use crate::assess::{assess, assess_reusing};
     use crate::chord::ChordLengths;
     use crate::{FitOptions, Reduction, Vector2};
+
+    /// Spans by the sharp points at data indices 10, 40, 55, 70 (a closed polygon): a point after
+    /// 70 or before 10 is in the span that wraps round; neighbours wrap round too.
+    #[test]
+    fn span_index_finds_spans_and_neighbours() {
+        let fitting = [
+            (0, false),
+            (10, true),
+            (25, false),
+            (40, true),
+            (55, true),
+            (70, true),
+            (80, false),
+        ];
+        let sharp: Vec<bool> = fitting.iter().map(|f| f.1).collect();
+        let spans = SpanIndex::new(&fitting, &sharp);
+        let of = [0, 10, 25, 39, 40, 54, 55, 70, 80].map(|i| spans.of(i));
+        assert_eq!(of, [3, 0, 0, 0, 1, 1, 2, 3, 3]);
+        assert!(spans.near(&[0], 0) && spans.near(&[0], 1) && spans.near(&[0], 3));
+        assert!(!spans.near(&[0], 2) && !spans.near(&[], 0));
+        assert!(spans.near(&[3], 0) && spans.near(&[1, 3], 2));
+        let none = SpanIndex::new(&fitting, &[false; 7]);
+        assert_eq!(none.of(25), 0);
+        assert!(none.near(&[0], 0));
+    }
 
     /// The search starts at half the segments of the initial count (points = segments − 1).
     #[test]

@@ -175,6 +175,22 @@ pub(crate) struct Measured<const D: usize> {
     errors: SegmentErrors,
 }
 
+impl<const D: usize> Measured<D> {
+    /// The errors of the segment on the data range `range` with the control points `ctrl`.
+    pub(crate) fn new(range: (usize, usize), ctrl: [Vector<D>; 4], errors: SegmentErrors) -> Self {
+        Self {
+            range,
+            ctrl,
+            errors,
+        }
+    }
+
+    /// The segment's first data index, by which [`assess_reusing`] finds it.
+    pub(crate) fn first(&self) -> usize {
+        self.range.0
+    }
+}
+
 /// Errors of every segment of `curve`.
 pub(crate) fn assess<const D: usize>(
     data: &[Vector<D>],

@@ -16,10 +16,11 @@
 use bez_core::Vector;
 
 use crate::SubdivCurve;
-use crate::assess::assess_segment;
+use crate::assess::{Measured, assess_segment};
 use crate::chord::ChordLengths;
 use crate::corner_angles::corner_turns_kept;
 use crate::fit::{FitMode, FitOptions, Reduction, solve_curve};
+use crate::insertion::segment_range;
 use crate::refit::refit;
 
 /// `options` with interpolation (eq. (4)) as the mode: the start of [`Reduction::Refit`]'s
@@ -59,8 +60,15 @@ pub(crate) fn reduce<const D: usize>(
     if fitting.len() > MAX_REDUCED {
         return 0;
     }
+    // With [`Reduction::Refit`] a trial depends only on the spans between sharp vertices that its
+    // window reaches: a point is tried again in a later pass only when a point of its span or of
+    // a neighbouring one was removed in the pass before (the sharp vertices, never removed, name
+    // the spans by their data indices).
+    let spans = SpanIndex::new(fitting, curve.sharp());
+    let mut changed: Option<Vec<usize>> = None;
     for _ in 0..PASSES {
         let before = removed;
+        let mut now = Vec::new();
         let k = fitting.len();
         let segs = errors.len();
         // Regular points, those with the smallest error on their two segments first.
@@ -80,18 +88,62 @@ pub(crate) fn reduce<const D: usize>(
             let Ok(j) = fitting.binary_search_by_key(&index, |f| f.0) else {
                 continue;
             };
+            let span = spans.of(index);
+            let unchanged = changed.as_ref().is_some_and(|c| !spans.near(c, span));
+            if options.reduction == Reduction::Refit && unchanged {
+                continue;
+            }
             if let Some(new_errors) = try_removal(data, fitting, curve, errors, closed, options, j)
             {
                 fitting.remove(j);
                 (*curve, *errors) = new_errors;
                 removed += 1;
+                now.push(span);
             }
         }
         if removed == before {
             break;
         }
+        changed = Some(now);
     }
     removed
+}
+
+/// The spans between consecutive sharp fitting points, numbered in polygon order from the first
+/// sharp point (a closed polygon without one is a single span); the sharp points are never
+/// removed, so their data indices find a point's span throughout the removal.
+struct SpanIndex {
+    /// Data indices of the sharp points, increasing.
+    starts: Vec<usize>,
+}
+
+impl SpanIndex {
+    fn new(fitting: &[(usize, bool)], sharp: &[bool]) -> Self {
+        let starts = fitting
+            .iter()
+            .zip(sharp)
+            .filter(|(_, s)| **s)
+            .map(|(f, _)| f.0)
+            .collect();
+        Self { starts }
+    }
+
+    /// The span of the point at data index `index`: the last sharp point at or before it, or the
+    /// last of all (the span that wraps round a closed polygon).
+    fn of(&self, index: usize) -> usize {
+        self.starts
+            .partition_point(|&s| s <= index)
+            .checked_sub(1)
+            .unwrap_or(self.starts.len().saturating_sub(1))
+    }
+
+    /// Whether a span in `changed` is `span` or a neighbour of it.
+    fn near(&self, changed: &[usize], span: usize) -> bool {
+        let m = self.starts.len().max(1);
+        changed
+            .iter()
+            .any(|&c| c == span || (c + 1) % m == span || (span + 1) % m == c)
+    }
 }
 
 /// The curve without fitting point `j` and an upper bound of each of its segment errors, or
@@ -315,18 +367,23 @@ fn strictly_inside(i: usize, (a, b): (usize, usize), n: usize) -> bool {
 
 /// Fits every span between two consecutive sharp points of the initial fitting points `seed`
 /// directly by least squares ([`Reduction::Refit`] in place of the insertion loop): for each span
-/// the fewest regular points, counting up from none to [`EXTRA_POINTS`] more than the span's
-/// initial count, evenly spaced or else graded, whose refitted segments are all within the
-/// tolerance. The spans are independent (a sharp vertex's phantom point decouples the
-/// two sides), so each trial refits and measures only its span. `None` when a span needs more
-/// points than that; the insertion loop takes over then.
+/// the fewest regular points, evenly spaced or else graded, whose refitted segments are all within
+/// the tolerance. The search counts up from [`lowest_count`] of the span's initial count to
+/// [`EXTRA_POINTS`] more than it, and down from there while the count at the start passes. The
+/// spans are independent (a sharp vertex's phantom point decouples the two sides), so each trial
+/// refits and measures only its span. `None` when a span needs more points than that; the
+/// insertion loop takes over then.
+///
+/// Also returns the errors of the accepted segments, sorted by their first data index: each was
+/// measured within the tolerance, so no measurement stopped early and they are exact, and the
+/// segments of a span stay bit for bit what they were while the other spans are fitted.
 pub(crate) fn fit_spans<const D: usize>(
     data: &[Vector<D>],
     chords: &ChordLengths,
     seed: &[(usize, bool)],
     closed: bool,
     options: &FitOptions,
-) -> Option<(Vec<(usize, bool)>, SubdivCurve<D>)> {
+) -> Option<SpanFit<D>> {
     let n = data.len();
     let tol = options.tolerance;
     let mut fitting = seed.to_vec();
@@ -336,12 +393,14 @@ pub(crate) fn fit_spans<const D: usize>(
         fitting[last].1 = true;
     }
     let mut curve = solve_curve(data, &fitting, closed, &interpolating(options)).ok()?;
+    let mut measured = Vec::new();
     for span in spans(&fitting, n, closed) {
         let inside = |i: usize| strictly_inside(i, span, n);
         let seeded = fitting.iter().filter(|f| inside(f.0)).count();
-        let mut accepted = None;
-        for count in 0..=seeded + EXTRA_POINTS {
-            accepted = [Spacing::Even, Spacing::Graded]
+        // The first spacing with `count` points whose refit keeps the span within the tolerance:
+        // its fitting points, curve and the errors of the span's segments.
+        let attempt = |count: usize| {
+            [Spacing::Even, Spacing::Graded]
                 .into_iter()
                 .find_map(|spacing| {
                     let trial = span_trial(&fitting, chords, span, count, spacing, inside);
@@ -355,21 +414,53 @@ pub(crate) fn fit_spans<const D: usize>(
                         let start = trial[s].0;
                         start == span.0 % n || inside(start)
                     });
+                    let mut errors = Vec::new();
                     for s in span_segments {
                         let e = assess_segment(data, &trial, &next, closed, options, s, tol);
                         if e.driven(options.measure) > tol {
                             return None;
                         }
+                        let range = segment_range(&trial, s, n);
+                        errors.push(Measured::new(range, next.segment_controls(s).ok()?, e));
                     }
-                    Some((trial, next))
-                });
-            if accepted.is_some() {
-                break;
+                    Some((trial, next, errors))
+                })
+        };
+        let lowest = lowest_count(seeded);
+        let mut count = lowest;
+        let mut accepted = loop {
+            if count > seeded + EXTRA_POINTS {
+                return None;
+            }
+            if let Some(found) = attempt(count) {
+                break found;
+            }
+            count += 1;
+        };
+        if count == lowest {
+            while let Some(found) = count.checked_sub(1).and_then(attempt) {
+                accepted = found;
+                count -= 1;
             }
         }
-        (fitting, curve) = accepted?;
+        let errors;
+        (fitting, curve, errors) = accepted;
+        measured.extend(errors);
     }
-    Some((fitting, curve))
+    measured.sort_unstable_by_key(Measured::first);
+    Some((fitting, curve, measured))
+}
+
+/// What [`fit_spans`] returns: the fitting points, the curve and the errors of its segments.
+pub(crate) type SpanFit<const D: usize> = (Vec<(usize, bool)>, SubdivCurve<D>, Vec<Measured<D>>);
+
+/// The count of regular points at which [`fit_spans`] starts a span's search, from the span's
+/// initial count `seeded`: half as many segments. The initial count passes the interpolation error
+/// estimate `(5/384) ℓ Θ³ ≤ tol / 2` of the seeding, whose left side falls as the fourth power of
+/// the segment count (the length ℓ and the turn Θ of a segment both fall as its inverse): half
+/// the segments would need an error 8 times below the estimate's at the full tolerance.
+fn lowest_count(seeded: usize) -> usize {
+    seeded.div_ceil(2).saturating_sub(1)
 }
 
 /// Points beyond its initial count that [`fit_spans`] tries in a span before leaving the fit to
@@ -471,7 +562,82 @@ fn respaced_refit<const D: usize>(
 
 #[cfg(test)]
 mod tests {
-    use super::Spacing;
+    use super::{Spacing, SpanIndex, fit_spans, lowest_count};
+    use crate::assess::{assess, assess_reusing};
+    use crate::chord::ChordLengths;
+    use crate::{FitOptions, Reduction, Vector2};
+
+    /// Spans by the sharp points at data indices 10, 40, 55, 70 (a closed polygon): a point after
+    /// 70 or before 10 is in the span that wraps round; neighbours wrap round too.
+    #[test]
+    fn span_index_finds_spans_and_neighbours() {
+        let fitting = [
+            (0, false),
+            (10, true),
+            (25, false),
+            (40, true),
+            (55, true),
+            (70, true),
+            (80, false),
+        ];
+        let sharp: Vec<bool> = fitting.iter().map(|f| f.1).collect();
+        let spans = SpanIndex::new(&fitting, &sharp);
+        let of = [0, 10, 25, 39, 40, 54, 55, 70, 80].map(|i| spans.of(i));
+        assert_eq!(of, [3, 0, 0, 0, 1, 1, 2, 3, 3]);
+        assert!(spans.near(&[0], 0) && spans.near(&[0], 1) && spans.near(&[0], 3));
+        assert!(!spans.near(&[0], 2) && !spans.near(&[], 0));
+        assert!(spans.near(&[3], 0) && spans.near(&[1, 3], 2));
+        let none = SpanIndex::new(&fitting, &[false; 7]);
+        assert_eq!(none.of(25), 0);
+        assert!(none.near(&[0], 0));
+    }
+
+    /// The search starts at half the segments of the initial count (points = segments − 1).
+    #[test]
+    fn lowest_count_halves_the_segments() {
+        for (seeded, lowest) in [
+            (0, 0),
+            (1, 0),
+            (2, 0),
+            (3, 1),
+            (4, 1),
+            (13, 6),
+            (14, 6),
+            (21, 10),
+        ] {
+            assert_eq!(lowest_count(seeded), lowest, "{seeded}");
+            assert!(2 * (lowest + 1) <= seeded + 1 || lowest == 0);
+            assert!(2 * (lowest + 2) > seeded + 1);
+        }
+    }
+
+    /// The errors the span fit hands on are those of a full measurement of its curve, bit for bit.
+    #[test]
+    fn span_fit_errors_are_those_of_a_full_measurement() {
+        // A half disc: the semicircle (data 0..=80), then the diameter back; corners at 0 and 80.
+        let mut data: Vec<Vector2> = (0..=80)
+            .map(|i| {
+                let a = std::f64::consts::PI * f64::from(i) / 80.0;
+                Vector2::new(a.cos(), a.sin())
+            })
+            .collect();
+        data.extend((1..40).map(|i| Vector2::new(-1.0 + f64::from(i) / 20.0, 0.0)));
+        let opts = FitOptions::new(1e-2).with_reduction(Reduction::Refit);
+        let chords = ChordLengths::robust(&data, true, 1.5e-2);
+        let mut seed: Vec<(usize, bool)> = (0..8).map(|m| (10 * m, m == 0)).collect();
+        seed.push((80, true));
+        let (fitting, curve, mut measured) = fit_spans(&data, &chords, &seed, true, &opts).unwrap();
+        assert_eq!(measured.len(), curve.segment_count());
+        assert!(fitting.len() > 3);
+        let full = assess(&data, &fitting, &curve, true, &opts);
+        let reused = assess_reusing(&data, &fitting, &curve, true, &opts, &mut measured);
+        assert_eq!(reused.driven, full.driven);
+        assert!(full.driven.iter().all(|&e| e <= 1e-2));
+        assert_eq!(
+            (reused.max_d2c, reused.rms_d2c, reused.max_c2d),
+            (full.max_d2c, full.rms_d2c, full.max_c2d)
+        );
+    }
 
     /// Even fractions are `m / p`; graded ones are increasing, symmetric about the middle, and
     /// their steps grow from the ends to the middle (denser next to the span's ends).

@@ -9,9 +9,11 @@
 use std::fmt::Write as _;
 
 use kurbo::simplify::{SimplifyOptions, simplify_bezpath};
-use kurbo::{Affine, BezPath, ParamCurve, ParamCurveArclen, ParamCurveNearest, PathSeg};
+use kurbo::{
+    Affine, BezPath, ParamCurve, ParamCurveArclen, ParamCurveNearest, PathEl, PathSeg, Point, Vec2,
+};
 use serde_json::{Value, json};
-use subdiv_fit::{FitMode, FitOptions, Reduction, fit_bez_path};
+use subdiv_fit::{CORNER_TOLERANCE, FitMode, FitOptions, Reduction, Vector2, fit_bez_path};
 
 use crate::DynError;
 use crate::tables::Table;
@@ -87,6 +89,77 @@ struct Totals {
     corners: usize,
     corners_sharp: usize,
     extra_sharp: usize,
+    /// Largest difference, in degrees, between the turn of the fit at a kept corner that turns by
+    /// at least [`BOUNDED_TURN`] (its control polygon's turn there) and the outline's.
+    turn_error: f64,
+}
+
+/// Corners of the outline that turn by at least this many degrees count for the turn error (the
+/// corners whose turn `FitOptions::corner_tolerance` bounds).
+const BOUNDED_TURN: f64 = 20.0;
+
+/// The unsigned angle between two directions, in degrees.
+fn angle(a: Vec2, b: Vec2) -> f64 {
+    a.cross(b).abs().atan2(a.dot(b)).to_degrees()
+}
+
+/// The joints of the outline's subpaths (closed ones wrap round) with the turn of the tangent
+/// there, in degrees (tangents from the end points and points 10⁻⁷ of the parameter inside).
+fn joints(outline: &BezPath) -> Vec<(Point, f64)> {
+    let mut out = Vec::new();
+    let mut sub: Vec<PathSeg> = Vec::new();
+    let mut flush = |sub: &mut Vec<PathSeg>, closed: bool| {
+        let m = sub.len();
+        for i in 0..m {
+            if i + 1 == m && !closed {
+                break;
+            }
+            let (a, b) = (sub[i], sub[(i + 1) % m]);
+            let t_in = a.eval(1.0) - a.eval(1.0 - 1e-7);
+            let t_out = b.eval(1e-7) - b.eval(0.0);
+            out.push((a.eval(1.0), angle(t_in, t_out)));
+        }
+        sub.clear();
+    };
+    let mut start = Point::ZERO;
+    let mut last = Point::ZERO;
+    for el in outline.elements() {
+        match *el {
+            PathEl::MoveTo(p) => {
+                flush(&mut sub, false);
+                (start, last) = (p, p);
+            }
+            PathEl::LineTo(p) => {
+                sub.push(PathSeg::Line(kurbo::Line::new(last, p)));
+                last = p;
+            }
+            PathEl::QuadTo(c, p) => {
+                sub.push(PathSeg::Quad(kurbo::QuadBez::new(last, c, p)));
+                last = p;
+            }
+            PathEl::CurveTo(c1, c2, p) => {
+                sub.push(PathSeg::Cubic(kurbo::CubicBez::new(last, c1, c2, p)));
+                last = p;
+            }
+            PathEl::ClosePath => {
+                if last != start {
+                    sub.push(PathSeg::Line(kurbo::Line::new(last, start)));
+                }
+                sub.retain(|s| s.arclen(1e-9) > 0.0);
+                flush(&mut sub, true);
+                last = start;
+            }
+        }
+    }
+    flush(&mut sub, false);
+    out
+}
+
+/// The turn of a control polygon at vertex `j`, in degrees (closed polygons wrap round).
+fn polygon_turn(p: &[Vector2], j: usize) -> f64 {
+    let k = p.len();
+    let (a, b) = (p[j] - p[(j + k - 1) % k], p[(j + 1) % k] - p[j]);
+    angle(Vec2::new(a.x(), a.y()), Vec2::new(b.x(), b.y()))
 }
 
 /// Rounds of the interleaved timing (each fits every glyph once per method).
@@ -114,7 +187,7 @@ fn kurbo_all(glyphs: &[Glyph], tol: f64) {
 /// The subdiv-fit configurations of the table at `tol`: interpolation and least squares, each
 /// with the default point removal and with re-spacing first, and the least-squares refit of the
 /// spans (`Reduction::Refit`).
-fn configurations(tol: f64) -> [(&'static str, FitOptions); 5] {
+fn configurations(tol: f64) -> [(&'static str, FitOptions); 6] {
     let interp = FitOptions::new(tol);
     let lsq = interp.with_mode(FitMode::LeastSquares);
     let respace = Reduction::RespaceAndRemove;
@@ -132,6 +205,12 @@ fn configurations(tol: f64) -> [(&'static str, FitOptions); 5] {
         (
             "subdiv-fit, least-squares refit of the spans",
             interp.with_reduction(Reduction::Refit),
+        ),
+        (
+            "subdiv-fit, least-squares refit of the spans, corner bound 0.5°",
+            interp
+                .with_reduction(Reduction::Refit)
+                .with_corner_tolerance(Some(CORNER_TOLERANCE)),
         ),
     ]
 }
@@ -158,7 +237,31 @@ fn subdiv_fit_totals(glyphs: &[Glyph], tol: f64, opts: &FitOptions) -> Result<To
     for g in glyphs {
         let (path, fits) = fit_bez_path(&g.outline, opts)?;
         let corners = subdiv_fit::sample_bez_path(&g.outline, tol)?;
+        let outline_joints = joints(&g.outline);
         for (f, c) in fits.iter().zip(&corners) {
+            for (j, &index) in f.fitting.iter().enumerate() {
+                if !f.curve.sharp()[j] || !c.corners.contains(&index) {
+                    continue;
+                }
+                if f.curve.closure() == subdiv_fit::Closure::Open
+                    && (j == 0 || j + 1 == f.fitting.len())
+                {
+                    continue;
+                }
+                let v = c.points[index];
+                let at = Point::new(v.x(), v.y());
+                let joint = outline_joints
+                    .iter()
+                    .min_by(|x, y| (x.0 - at).hypot2().total_cmp(&(y.0 - at).hypot2()));
+                if let Some(&(p, turn)) = joint
+                    && (p - at).hypot() < 1e-9
+                    && turn >= BOUNDED_TURN
+                {
+                    t.turn_error = t
+                        .turn_error
+                        .max((polygon_turn(f.curve.points(), j) - turn).abs());
+                }
+            }
             t.points += f.curve.points().len();
             let sharp: Vec<usize> = (0..f.fitting.len())
                 .filter(|&j| f.curve.is_sharp(j))
@@ -208,16 +311,16 @@ pub(crate) fn table() -> Result<Table, DynError> {
          {} glyphs (U+{first:04X}..), fitted contour by contour with `fit_bez_path` (samples about every tolerance, the outline's corners given as known corners, two-sided error, default options otherwise).\n\
          TrueType: the points the font's glyph table stores ({truetype}, on- and off-curve, implied points not counted). kurbo: `simplify_bezpath` on the true outline at accuracy = tolerance, counting 3 points per cubic, 2 per quadratic, 1 per line.\n\
          Max error: the two-sided distance to the true outline (without the one-point contour of 'u') (16 samples per segment each way, nearest points on the other side), largest over the glyphs; glyphs over: glyphs whose error exceeds the tolerance.\n\
-         Corners: joints of the outline where the tangent turns by more than 1°, and how many are sharp vertices of the fit; extra sharp: sharp vertices the fit added (corners at the feature scale).\n\
+         Corners: joints of the outline where the tangent turns by more than 1°, and how many are sharp vertices of the fit; extra sharp: sharp vertices the fit added (corners at the feature scale); max corner turn error: the largest difference between the fit's turn at a kept corner that turns by at least {BOUNDED_TURN}° (its control polygon's turn) and the outline's.\n\
          Time per glyph (not checked): {{clock}} per glyph of fitting all glyphs, the methods interleaved in one release-mode run, the fastest of {ROUNDS} rounds (on the machine that ran `cargo xtask tables`); time ratio: to kurbo's at the same tolerance.\n\n\
-         | tolerance (em) | method | control points | ratio to TrueType | max error (em) | glyphs over | corners kept sharp | extra sharp | time per glyph (ms) | time ratio to kurbo |\n\
-         |---|---|---|---|---|---|---|---|---|---|\n",
+         | tolerance (em) | method | control points | ratio to TrueType | max error (em) | glyphs over | corners kept sharp | extra sharp | max corner turn error (°) | time per glyph (ms) | time ratio to kurbo |\n\
+         |---|---|---|---|---|---|---|---|---|---|---|\n",
         glyphs.len()
     );
     let mut rows = Vec::new();
     let mut clock = "wall-clock time";
     for tol in [1e-3, 1e-2] {
-        writeln!(md, "| {tol} | TrueType | {truetype} | 1.00 | | | | | | |")?;
+        writeln!(md, "| {tol} | TrueType | {truetype} | 1.00 | | | | | | | |")?;
         let (ms, cpu) = times_per_glyph(&glyphs, tol)?;
         clock = if cpu {
             "CPU time of the fitting thread"
@@ -240,14 +343,14 @@ pub(crate) fn table() -> Result<Table, DynError> {
             } else {
                 String::new()
             };
-            let extra = if mode.is_some() {
-                t.extra_sharp.to_string()
+            let (extra, turn) = if mode.is_some() {
+                (t.extra_sharp.to_string(), format!("{:.2}", t.turn_error))
             } else {
-                String::new()
+                (String::new(), String::new())
             };
             writeln!(
                 md,
-                "| {tol} | {name} | {} | {:.2} | {:.2e} | {} | {corners} | {extra} | {ms:.2} | {:.1} |",
+                "| {tol} | {name} | {} | {:.2} | {:.2e} | {} | {corners} | {extra} | {turn} | {ms:.2} | {:.1} |",
                 t.points,
                 t.points as f64 / truetype as f64,
                 t.max_error,
@@ -258,6 +361,7 @@ pub(crate) fn table() -> Result<Table, DynError> {
                 "tolerance": tol, "method": name, "control_points": t.points,
                 "max_error": t.max_error, "glyphs_over": t.glyphs_over,
                 "corners": t.corners, "corners_sharp": t.corners_sharp, "extra_sharp": t.extra_sharp,
+                "turn_error": t.turn_error,
             }));
         }
     }

@@ -22,6 +22,7 @@ use crate::corner_angles::corner_turns_kept;
 use crate::fit::{FitMode, FitOptions, Reduction, solve_curve};
 use crate::insertion::segment_range;
 use crate::refit::refit;
+use crate::vertex::VertexKind;
 
 /// `options` with interpolation (eq. (4)) as the mode: the start of [`Reduction::Refit`]'s
 /// least-squares refits.
@@ -64,7 +65,7 @@ pub(crate) fn reduce<const D: usize>(
     // window reaches: a point is tried again in a later pass only when a point of its span or of
     // a neighbouring one was removed in the pass before (the sharp vertices, never removed, name
     // the spans by their data indices).
-    let spans = SpanIndex::new(fitting, curve.sharp());
+    let spans = SpanIndex::new(fitting, curve.kinds());
     let mut changed: Option<Vec<usize>> = None;
     for _ in 0..PASSES {
         let before = removed;
@@ -118,11 +119,11 @@ struct SpanIndex {
 }
 
 impl SpanIndex {
-    fn new(fitting: &[(usize, bool)], sharp: &[bool]) -> Self {
+    fn new(fitting: &[(usize, bool)], kinds: &[VertexKind]) -> Self {
         let starts = fitting
             .iter()
-            .zip(sharp)
-            .filter(|(_, s)| **s)
+            .zip(kinds)
+            .filter(|(_, k)| k.is_sharp())
             .map(|(f, _)| f.0)
             .collect();
         Self { starts }
@@ -565,7 +566,7 @@ mod tests {
     use super::{Spacing, SpanIndex, fit_spans, lowest_count};
     use crate::assess::{assess, assess_reusing};
     use crate::chord::ChordLengths;
-    use crate::{FitOptions, Reduction, Vector2};
+    use crate::{FitOptions, Reduction, Vector2, VertexKind};
 
     /// Spans by the sharp points at data indices 10, 40, 55, 70 (a closed polygon): a point after
     /// 70 or before 10 is in the span that wraps round; neighbours wrap round too.
@@ -580,14 +581,23 @@ mod tests {
             (70, true),
             (80, false),
         ];
-        let sharp: Vec<bool> = fitting.iter().map(|f| f.1).collect();
-        let spans = SpanIndex::new(&fitting, &sharp);
+        let kinds: Vec<VertexKind> = fitting
+            .iter()
+            .map(|f| {
+                if f.1 {
+                    VertexKind::Sharp
+                } else {
+                    VertexKind::Regular
+                }
+            })
+            .collect();
+        let spans = SpanIndex::new(&fitting, &kinds);
         let of = [0, 10, 25, 39, 40, 54, 55, 70, 80].map(|i| spans.of(i));
         assert_eq!(of, [3, 0, 0, 0, 1, 1, 2, 3, 3]);
         assert!(spans.near(&[0], 0) && spans.near(&[0], 1) && spans.near(&[0], 3));
         assert!(!spans.near(&[0], 2) && !spans.near(&[], 0));
         assert!(spans.near(&[3], 0) && spans.near(&[1, 3], 2));
-        let none = SpanIndex::new(&fitting, &[false; 7]);
+        let none = SpanIndex::new(&fitting, &[VertexKind::Regular; 7]);
         assert_eq!(none.of(25), 0);
         assert!(none.near(&[0], 0));
     }

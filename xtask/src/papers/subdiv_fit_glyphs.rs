@@ -240,7 +240,7 @@ fn subdiv_fit_totals(glyphs: &[Glyph], tol: f64, opts: &FitOptions) -> Result<To
         let outline_joints = joints(&g.outline);
         for (f, c) in fits.iter().zip(&corners) {
             for (j, &index) in f.fitting.iter().enumerate() {
-                if !f.curve.sharp()[j] || !c.corners.contains(&index) {
+                if !f.curve.is_sharp(j) || !c.corners.contains(&index) {
                     continue;
                 }
                 if f.curve.closure() == subdiv_fit::Closure::Open

@@ -3,13 +3,21 @@
 //! the models computed exactly.
 //!
 //! The curve B is covered by cubic models Cₖ on consecutive parameter ranges with
-//! |B(t) − Cₖ(σ)| ≤ rₖ. For a chord over [a, b] the march computes the Hausdorff distance e
-//! between the models' arc C([a, b]) and the chord from C(a) to C(b) (a bound that is exact
-//! when the arc projects monotonically, see [`Window::bound`]); the points it sends are the
-//! curve's own B(a), B(b), each within r of C(a), C(b), so the polyline through them is within
-//! e + 2 maxₖ rₖ of B([a, b]) both ways. Each chord is the longest that passes on a short
-//! search; a point costs one O(n) evaluation of B (Horner), every try O(1), every model two
-//! O(n) evaluations (B and B′ at its end), and every block of about 16 models one O(n²) de
+//! |B(t) − Cₖ(σ)| ≤ rₖ; each model ends where the next begins, at the same stored point. The
+//! points the march sends are the models' own points Vᵢ = C(tᵢ) (each within r of B(tᵢ)), with
+//! the curve's exact end points V₀ = P₀ = C(0) and Vₘ = Pₙ = C(1). For a chord over [a, b] it
+//! computes e ≥ the Hausdorff distance between the models' arc C([a, b]) and the segment
+//! [C(a), C(b)] (exact when the arc projects monotonically, see [`Window::bound`]), and
+//! accepts the chord when e + r ≤ tol with r = maxₖ rₖ over the models the chord spans.
+//!
+//! Bound: every curve point B(t), t ∈ [a, b], is within r of C(t), which is within e of the
+//! segment; every segment point q is within e of some C(t), which is within r of B(t). So the
+//! segment and B([a, b]) are within e + r ≤ tol of each other both ways, and the polyline and
+//! the curve too. (Before, the points sent were B(tᵢ) by Horner's rule, each within r of the
+//! models' point, and the test was e + 2r ≤ tol.)
+//!
+//! Cost: a point is O(1) (a point of a model), every try O(1) per model it spans, every model
+//! two O(n) evaluations (B and B′ at its end), and every block of about 16 models one O(n²) de
 //! Casteljau split.
 
 use bez_core::{HornerBernstein, Vector2, hodograph_slice};
@@ -21,9 +29,9 @@ use crate::stack_horner::{STACK_POINTS, StackHorner};
 
 /// The most segments one call places (2²⁰), as up to degree 3.
 const MAX_SEGMENTS: usize = crate::optimal::MAX_OPTIMAL_SEGMENTS;
-/// The models' remainder target as a fraction of the tolerance: 2r costs 1/32 of it, about
+/// The models' remainder target as a fraction of the tolerance: r costs 1/32 of it, about
 /// 1.6 % more segments.
-const MODEL_TARGET: f64 = 1.0 / 64.0;
+const MODEL_TARGET: f64 = 1.0 / 32.0;
 /// The most a model's remainder may be when rounding alone exceeds the target (tolerances near
 /// the rounding floor).
 const MODEL_CEILING: f64 = 0.25;
@@ -35,8 +43,10 @@ const EXTEND_BELOW: f64 = 0.92;
 const MAX_EXTENSIONS: usize = 2;
 
 /// Streams the points of `Method::Optimal` for a curve of degree ≥ 4 with control points `p`
-/// after B(0) (sent by the caller): every chord within `accept` of the curve, the last point
-/// Pₙ at t = 1. Returns the number of segments. Up to degree
+/// after B(0) (sent by the caller): every chord within `accept` of the curve, each point (t, C(t))
+/// a point of the models, within their remainder r of B(t) (r ≤ `accept` / 32, up to
+/// `accept` / 4 at tolerances near the rounding floor), the last point Pₙ at t = 1. Returns
+/// the number of segments. Up to degree
 /// [`MAX_STACK_DEGREE`](crate::MAX_STACK_DEGREE) nothing is allocated.
 ///
 /// # Errors
@@ -165,8 +175,8 @@ impl<E: Fn(f64) -> Vector2, D: Fn(f64) -> Vector2> Window<'_, E, D> {
     /// Every arc point is within hypot(max |offset|, overshoot) of the chord (overshoot: how
     /// far the projection leaves [0, |d|]), and the continuous projection covers [0, |d|], so
     /// every chord point has an arc point at distance ≤ max |offset|: that is the Hausdorff
-    /// distance between arc and chord when the projection stays inside. Then add 2 maxₖ rₖ (the
-    /// curve and its chord are each within r of the models' arc and chord).
+    /// distance between arc and chord when the projection stays inside. Then add maxₖ rₖ (the
+    /// curve is within r of the models' arc, and the chord's ends are the models' points).
     fn bound(&self, ta: f64, pa: Vector2, tb: f64) -> (f64, Vector2) {
         let mut k = 0;
         while k + 1 < self.len && self.get(k).t1 < tb {
@@ -208,7 +218,7 @@ impl<E: Fn(f64) -> Vector2, D: Fn(f64) -> Vector2> Window<'_, E, D> {
         } else {
             offset
         };
-        (e + 2.0 * r, pb)
+        (e + r, pb)
     }
 }
 
@@ -258,7 +268,7 @@ fn cubic_range(k: [f64; 4], s0: f64, s1: f64) -> (f64, f64) {
 }
 
 /// The march on the models of `p` (buffers for [`ModelStream`]) with `eval` for B, sending
-/// each point (t, B(t)) after the first to `sink`.
+/// each point (t, C(t)) after the first to `sink` (C the models, within r of B; C(1) = Pₙ).
 fn march<E: Fn(f64) -> Vector2, D: Fn(f64) -> Vector2>(
     p: &[Vector2],
     (eval, tangent): (E, D),
@@ -296,6 +306,7 @@ fn march<E: Fn(f64) -> Vector2, D: Fn(f64) -> Vector2>(
     let (mut ta, mut pa) = (0.0_f64, p[0]);
     let mut step = first_step(window.get(0), accept);
     let mut segments = 0;
+    let mut previous = 0.0_f64;
     while ta < 1.0 {
         window.drop_before(ta);
         let mut best: Option<(f64, Vector2, f64)> = None;
@@ -350,11 +361,19 @@ fn march<E: Fn(f64) -> Vector2, D: Fn(f64) -> Vector2>(
                 limit: MAX_SEGMENTS,
             });
         }
-        sink(tb, if tb >= 1.0 { p[p.len() - 1] } else { eval(tb) });
-        // The next chord's first try: this one's length, rescaled to fill the tolerance.
+        sink(tb, pb);
+        // The next chord's first try: this one's length, rescaled to fill the tolerance and by
+        // the trend of the density √e / h from the chord before (within 0.8–1.25).
         let h = tb - ta;
+        let density = e.sqrt() / h;
+        let trend = if previous > 0.0 && density > 0.0 {
+            (density / previous).clamp(0.8, 1.25)
+        } else {
+            1.0
+        };
+        previous = density;
         step = if e > 0.0 {
-            h * (0.995 * (accept / e).sqrt()).clamp(0.5, 2.0)
+            h * (0.995 * (accept / e).sqrt() / trend).clamp(0.5, 2.0)
         } else {
             2.0 * h
         };
@@ -385,7 +404,40 @@ fn first_step(m: &Model, accept: f64) -> f64 {
 
 #[cfg(test)]
 mod tests {
+    #![allow(clippy::unwrap_used, reason = "tests fail loudly")]
+
+    use bez_core::proptest_support::curve;
+    use proptest::prelude::*;
+
     use super::*;
+
+    proptest! {
+        #![proptest_config(ProptestConfig::with_cases(64))]
+
+        /// Every point sent is a point of the models: within r ≤ accept / 32 of B(t) (de
+        /// Casteljau's point, an independent evaluation), the parameters increasing, the last
+        /// point Pₙ exactly at t = 1, and the count returned the number of points.
+        #[test]
+        fn points_are_within_the_remainder(c in curve::<2>(4..=30, 10.0), rel in 1e-5f64..1e-1) {
+            let size = c.points().iter().map(Vector2::amax).fold(1.0, f64::max);
+            let accept = rel * size;
+            let mut points = Vec::new();
+            let segments = march_models(c.points(), accept, 40, |q| points.push(q)).unwrap();
+            prop_assert_eq!(points.len(), segments);
+            let last = points.last().unwrap();
+            prop_assert_eq!((last.t, last.point), (1.0, c.end()));
+            let mut t = 0.0;
+            for q in &points {
+                prop_assert!(q.t > t);
+                t = q.t;
+                let error = (q.point - c.eval(q.t).unwrap()).norm();
+                prop_assert!(
+                    error <= MODEL_TARGET * accept + 1e-12 * size,
+                    "{} > {}", error, MODEL_TARGET * accept
+                );
+            }
+        }
+    }
 
     /// `cubic_range` against dense sampling, with extremes inside and outside the range.
     #[test]

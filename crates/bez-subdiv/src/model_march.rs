@@ -59,7 +59,6 @@ pub(crate) fn march_models(
     mut sink: impl FnMut(FlatPoint),
 ) -> Result<usize, SubdivError> {
     let len = p.len();
-    let n = (len - 1) as f64;
     let (origin, last) = (p[0], p[len - 1]);
     // The models and B are taken relative to P₀, so that their rounding follows the curve's
     // extent, not its distance from the origin; the points sent are P₀ + (B − P₀)(t).
@@ -68,30 +67,16 @@ pub(crate) fn march_models(
         point: if t >= 1.0 { last } else { origin + relative },
     };
     if len <= STACK_POINTS {
-        let mut buffers = [[Vector2::zeros(); STACK_POINTS]; 7];
-        let [
-            relative,
-            rest,
-            left,
-            right,
-            scaled,
-            hodograph,
-            scaled_hodograph,
-        ] = &mut buffers;
+        let mut buffers = [[Vector2::zeros(); STACK_POINTS]; 5];
+        let [relative, rest, left, right, scaled] = &mut buffers;
         for (r, &q) in relative.iter_mut().zip(p) {
             *r = q - origin;
         }
-        for (h, w) in hodograph.iter_mut().zip(p.windows(2)) {
-            *h = (w[1] - w[0]) * n;
-        }
         let relative = &relative[..len];
-        if let (Some(point), Some(tangent)) = (
-            StackHorner::new(relative, scaled),
-            StackHorner::new(&hodograph[..len - 1], scaled_hodograph),
-        ) {
+        if let Some(horner) = StackHorner::new(relative, scaled) {
             return march(
                 relative,
-                (|t| point.eval(t), |t| tangent.eval(t)),
+                |t| horner.jet(t),
                 [&mut rest[..len], &mut left[..len], &mut right[..len]],
                 accept,
                 max_depth,
@@ -110,10 +95,12 @@ pub(crate) fn march_models(
     let zero = Vector2::zeros();
     march(
         &relative,
-        (
-            |t| point.eval(t).unwrap_or(zero),
-            |t| tangent.eval(t).unwrap_or(zero),
-        ),
+        |t| {
+            (
+                point.eval(t).unwrap_or(zero),
+                tangent.eval(t).unwrap_or(zero),
+            )
+        },
         [rest, left, right],
         accept,
         max_depth,
@@ -122,15 +109,15 @@ pub(crate) fn march_models(
 }
 
 /// The models from the march's position on, in a ring of [`WINDOW`].
-struct Window<'a, E, D> {
-    stream: ModelStream<'a, E, D>,
+struct Window<'a, J> {
+    stream: ModelStream<'a, J>,
     models: [Model; WINDOW],
     front: usize,
     len: usize,
     done: bool,
 }
 
-impl<E: Fn(f64) -> Vector2, D: Fn(f64) -> Vector2> Window<'_, E, D> {
+impl<J: Fn(f64) -> (Vector2, Vector2)> Window<'_, J> {
     fn get(&self, k: usize) -> &Model {
         &self.models[(self.front + k) % WINDOW]
     }
@@ -175,7 +162,8 @@ impl<E: Fn(f64) -> Vector2, D: Fn(f64) -> Vector2> Window<'_, E, D> {
     /// Every arc point is within hypot(max |offset|, overshoot) of the chord (overshoot: how
     /// far the projection leaves [0, |d|]), and the continuous projection covers [0, |d|], so
     /// every chord point has an arc point at distance ≤ max |offset|: that is the Hausdorff
-    /// distance between arc and chord when the projection stays inside. Then add maxₖ rₖ (the
+    /// distance between arc and chord when the projection stays inside. (The cubics are taken
+    /// along d, |d| times these, and divided by |d| once.) Then add maxₖ rₖ (the
     /// curve is within r of the models' arc, and the chord's ends are the models' points).
     fn bound(&self, ta: f64, pa: Vector2, tb: f64) -> (f64, Vector2) {
         let mut k = 0;
@@ -184,9 +172,12 @@ impl<E: Fn(f64) -> Vector2, D: Fn(f64) -> Vector2> Window<'_, E, D> {
         }
         let pb = self.get(k).point(tb);
         let d = pb - pa;
-        let len = d.norm();
-        let inverse_len = 1.0 / len;
-        let (mut offset, mut lo, mut hi, mut r) = (0.0_f64, 0.0_f64, len, 0.0_f64);
+        // Offsets and projections are taken along d itself (|d| times their values along the
+        // unit vector) and divided by |d| once at the end; below the smallest normal |d|², the
+        // distance to `pa` bounds it.
+        let len2 = d.dot(&d);
+        let projected = len2 >= f64::MIN_POSITIVE;
+        let (mut offset, mut lo, mut hi, mut r) = (0.0_f64, 0.0_f64, len2, 0.0_f64);
         for j in 0..=k {
             let m = self.get(j);
             if m.t1 <= ta {
@@ -195,12 +186,11 @@ impl<E: Fn(f64) -> Vector2, D: Fn(f64) -> Vector2> Window<'_, E, D> {
             r = r.max(m.r);
             let (s0, s1) = (m.sigma(ta.max(m.t0)), m.sigma(tb.min(m.t1)));
             let rel = m.p0 - pa;
-            if len > 0.0 {
-                let u = d * inverse_len;
-                let cross = [u.perp(&rel), u.perp(&m.a), u.perp(&m.b), u.perp(&m.c)];
+            if projected {
+                let cross = [d.perp(&rel), d.perp(&m.a), d.perp(&m.b), d.perp(&m.c)];
                 let (low, high) = cubic_range(cross, s0, s1);
                 offset = offset.max(high).max(-low);
-                let along = [u.dot(&rel), u.dot(&m.a), u.dot(&m.b), u.dot(&m.c)];
+                let along = [d.dot(&rel), d.dot(&m.a), d.dot(&m.b), d.dot(&m.c)];
                 if !increasing(along, s0, s1) {
                     let (low, high) = cubic_range(along, s0, s1);
                     lo = lo.min(low);
@@ -212,11 +202,17 @@ impl<E: Fn(f64) -> Vector2, D: Fn(f64) -> Vector2> Window<'_, E, D> {
                 offset = offset.max(reach);
             }
         }
-        let overshoot = (-lo).max(hi - len);
-        let e = if overshoot > 0.0 {
-            (offset * offset + overshoot * overshoot).sqrt()
+        let len = len2.sqrt();
+        let e = if projected {
+            let overshoot = (-lo).max(hi - len2);
+            if overshoot > 0.0 {
+                offset.hypot(overshoot) / len
+            } else {
+                offset / len
+            }
         } else {
-            offset
+            // Every chord point is within |d| of `pa`, a point of the arc.
+            offset.max(len)
         };
         (e + r, pb)
     }
@@ -267,11 +263,11 @@ fn cubic_range(k: [f64; 4], s0: f64, s1: f64) -> (f64, f64) {
     (lo, hi)
 }
 
-/// The march on the models of `p` (buffers for [`ModelStream`]) with `eval` for B, sending
+/// The march on the models of `p` (buffers for [`ModelStream`]) with `jet` for B and B′, sending
 /// each point (t, C(t)) after the first to `sink` (C the models, within r of B; C(1) = Pₙ).
-fn march<E: Fn(f64) -> Vector2, D: Fn(f64) -> Vector2>(
+fn march<J: Fn(f64) -> (Vector2, Vector2)>(
     p: &[Vector2],
-    (eval, tangent): (E, D),
+    jet: J,
     buffers: [&mut [Vector2]; 3],
     accept: f64,
     max_depth: usize,
@@ -279,7 +275,7 @@ fn march<E: Fn(f64) -> Vector2, D: Fn(f64) -> Vector2>(
 ) -> Result<usize, SubdivError> {
     let stream = ModelStream::new(
         p,
-        (&eval, tangent),
+        jet,
         buffers,
         (accept * MODEL_TARGET, accept * MODEL_CEILING),
         max_depth,

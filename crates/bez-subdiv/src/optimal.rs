@@ -455,8 +455,10 @@ fn place<E: Evaluate, S: FnMut(FlatPoint)>(
 /// below 0.9 tol is tried once longer. Up to degree 3, B‴ is constant and B⁗ = 0, so nothing is
 /// subdivided: O(1) per point, no allocation. Above, the curve is covered piece by piece by
 /// cubic models with rigorous remainders and each chord is verified exactly on the models
-/// ([`model_march`](crate::model_march)): O(n) per point (one evaluation of B), O(n²) per
-/// block of about 16 models, no allocation up to degree [`MAX_STACK_DEGREE`](crate::MAX_STACK_DEGREE).
+/// ([`model_march`](crate::model_march)); the points sent there are the models' points, within
+/// their remainder (≤ tol / 32) of B(t), the end points exact: O(1) per point, O(n) per model
+/// (B and B′ at its end), O(n²) per block of about 16 models, no allocation up to degree
+/// [`MAX_STACK_DEGREE`](crate::MAX_STACK_DEGREE).
 ///
 /// # Errors
 /// [`SubdivError::TooFewPoints`], [`SubdivError::InvalidTolerance`],

@@ -92,13 +92,14 @@ fn fourth_derivative_bound(q: &[Vector2], span: f64) -> (f64, f64) {
 /// into equal models of the longest length with remainder ≤ `target`, about
 /// [`MODELS_PER_BLOCK`] of them (the next block's span is set from this one's model length).
 ///
-/// Rounding: B and B′ by Horner's rule are within 2n and 4n² ulps of the largest coordinate,
+/// Rounding: B and B′ by Horner's rule (in one pass, `StackHorner::jet`, or on the curve and its
+/// hodograph) are within 2n and 8n² ulps of the largest coordinate,
 /// every split of `rest` moves its control points by at most 8n ulps (`split_rounding`), whose
 /// fourth differences then move by 16 times that; all of it is added to the bounds.
-pub(crate) struct ModelStream<'a, E, D> {
+pub(crate) struct ModelStream<'a, J> {
     curve: &'a [Vector2],
-    point: E,
-    tangent: D,
+    /// B and B′ at t.
+    jet: J,
     rest: &'a mut [Vector2],
     left: &'a mut [Vector2],
     right: &'a mut [Vector2],
@@ -124,13 +125,13 @@ pub(crate) struct ModelStream<'a, E, D> {
 /// Models per block aimed at: one O(n²) split serves about this many O(n) models.
 const MODELS_PER_BLOCK: f64 = 16.0;
 
-impl<'a, E: Fn(f64) -> Vector2, D: Fn(f64) -> Vector2> ModelStream<'a, E, D> {
-    /// A stream over `curve` (at least 5 points) with `point` = B and `tangent` = B′, using
+impl<'a, J: Fn(f64) -> (Vector2, Vector2)> ModelStream<'a, J> {
+    /// A stream over `curve` (at least 5 points) with `jet` = (B, B′), using
     /// three buffers of the curve's length; models within `target` (plus rounding) and at
     /// least 2^−`max_depth` long.
     pub(crate) fn new(
         curve: &'a [Vector2],
-        (point, tangent): (E, D),
+        jet: J,
         buffers: [&'a mut [Vector2]; 3],
         (target, ceiling): (f64, f64),
         max_depth: usize,
@@ -139,11 +140,10 @@ impl<'a, E: Fn(f64) -> Vector2, D: Fn(f64) -> Vector2> ModelStream<'a, E, D> {
         rest.copy_from_slice(curve);
         let n = (curve.len() - 1) as f64;
         let size = curve.iter().map(Vector2::amax).fold(0.0, f64::max);
-        let at_t0 = (curve[0], tangent(0.0));
+        let at_t0 = (curve[0], jet(0.0).1);
         Self {
             curve,
-            point,
-            tangent,
+            jet,
             rest,
             left,
             right,
@@ -226,9 +226,9 @@ impl<'a, E: Fn(f64) -> Vector2, D: Fn(f64) -> Vector2> ModelStream<'a, E, D> {
         }
         let n = (self.curve.len() - 1) as f64;
         let eps = f64::EPSILON * self.size;
-        // B and B′ by Horner: within 2n and 4n² ulps; the model moves by at most the point's
+        // B and B′ by Horner: within 2n and 8n² ulps; the model moves by at most the point's
         // error plus w times the derivative's.
-        let (point_rounding, tangent_rounding) = (4.0 * n * eps, 8.0 * n * n * eps);
+        let (point_rounding, tangent_rounding) = (4.0 * n * eps, 16.0 * n * n * eps);
         let left = self.block_end - self.t0;
         let fixed = point_rounding + left * tangent_rounding;
         // Near the rounding floor the target gives way to the ceiling.
@@ -261,7 +261,7 @@ impl<'a, E: Fn(f64) -> Vector2, D: Fn(f64) -> Vector2> ModelStream<'a, E, D> {
             let c = self.curve;
             (c[c.len() - 1], (c[c.len() - 1] - c[c.len() - 2]) * n)
         } else {
-            ((self.point)(t1), (self.tangent)(t1))
+            (self.jet)(t1)
         };
         let w2 = w * w;
         let r = self.fourth * w2 * w2 / 384.0 + point_rounding + w * tangent_rounding;
@@ -276,31 +276,25 @@ impl<'a, E: Fn(f64) -> Vector2, D: Fn(f64) -> Vector2> ModelStream<'a, E, D> {
 mod tests {
     #![allow(clippy::unwrap_used, reason = "tests fail loudly")]
 
+    use bez_core::BezierCurve;
     use bez_core::proptest_support::curve;
-    use bez_core::{BezierCurve, HornerBernstein, hodograph_slice};
     use proptest::prelude::*;
 
     use super::*;
+    use crate::stack_horner::StackHorner;
 
     /// Every model of `c` with its `target`, after checking that the models tile [0, 1] and
     /// join exactly.
     fn models(c: &BezierCurve<2>, target: f64) -> Vec<Model> {
         let p = c.points();
-        let (point, tangent) = (
-            HornerBernstein::new(p),
-            HornerBernstein::new(&hodograph_slice(p)),
-        );
+        let mut scaled = [Vector2::zeros(); crate::stack_horner::STACK_POINTS];
+        let horner = StackHorner::new(p, &mut scaled).unwrap();
         let mut buffers = vec![vec![Vector2::zeros(); p.len()]; 3];
         let [a, b, d] = &mut buffers[..] else {
             unreachable!()
         };
-        let mut stream = ModelStream::new(
-            p,
-            (|t| point.eval(t).unwrap(), |t| tangent.eval(t).unwrap()),
-            [a, b, d],
-            (target, 4.0 * target),
-            40,
-        );
+        let mut stream =
+            ModelStream::new(p, |t| horner.jet(t), [a, b, d], (target, 4.0 * target), 40);
         let mut out: Vec<Model> = Vec::new();
         while let Some(m) = stream.next_model().unwrap() {
             let (t0, p0) = out.last().map_or((0.0, c.start()), |l| (l.t1, l.end));

@@ -17,7 +17,7 @@ use crate::wang::{flatten_wang, flatten_wang_small};
 /// | method | segments / N* (random cubics, tol = 1e-3 × size) | cost | use it for |
 /// |---|---|---|---|
 /// | [`Fast`](Method::Fast) | about 2 | fastest: no subdivision, a few flops per point (about 0.1 × kurbo's `flatten`) | rendering, hit testing, anything per frame |
-/// | [`Optimal`](Method::Optimal) | median 1.05, 90th percentile 1.10 | about kurbo's `flatten` on cubics (1.12 × its time on random cubics, 0.89–0.91 × on adversarial ones); about 0.2–0.3 µs per point at degree 25 | output that is stored or sent (fewest points) |
+/// | [`Optimal`](Method::Optimal) | median 1.05, 90th percentile 1.10 | about kurbo's `flatten` on cubics (1.12 × its time on random cubics, 0.89–0.91 × on adversarial ones); about 0.15 µs per point at degree 25 | output that is stored or sent (fewest points) |
 /// | [`LocalWang`](Method::LocalWang) | 1.6–2.0 | one halving per up to 16 points | high degrees |
 /// | [`Halving`](Method::Halving) | about 1.7 | one de Casteljau halving per segment | — |
 /// | [`PaperRule`](Method::PaperRule) | — | — | reproducing Ma, Lin & Shen's Table 1 only: **no guarantee** |
@@ -49,8 +49,10 @@ pub enum Method {
     /// ([`optimal_segment_count`](crate::optimal_segment_count)), each chord verified by a
     /// closed-form bound and shortened where it fails: close to N* segments (within 1.15 N* up
     /// to degree 3, 1.25 N* above), O(1) per point up to degree 3; above, each chord is
-    /// measured on cubic models of the curve with rigorous remainders, O(n) per point. No
-    /// allocation up to degree [`MAX_STACK_DEGREE`](crate::MAX_STACK_DEGREE).
+    /// measured on cubic models of the curve with rigorous remainders, and the points are the
+    /// models' points: within tol / 32 of B(t) (the first and last exact), the polyline still
+    /// within tol of the curve; O(n) per model. No allocation up to degree
+    /// [`MAX_STACK_DEGREE`](crate::MAX_STACK_DEGREE).
     Optimal,
     /// The paper's rule: split with `SplitRule` until eq. (3) holds with ε = tolerance / size
     /// (the reproduction of Table 1), then the chords through the pieces' end points.

@@ -3,13 +3,21 @@
 //! the models computed exactly.
 //!
 //! The curve B is covered by cubic models Cₖ on consecutive parameter ranges with
-//! |B(t) − Cₖ(σ)| ≤ rₖ. For a chord over [a, b] the march computes the Hausdorff distance e
-//! between the models' arc C([a, b]) and the chord from C(a) to C(b) (a bound that is exact
-//! when the arc projects monotonically, see [`Window::bound`]); the points it sends are the
-//! curve's own B(a), B(b), each within r of C(a), C(b), so the polyline through them is within
-//! e + 2 maxₖ rₖ of B([a, b]) both ways. Each chord is the longest that passes on a short
-//! search; a point costs one O(n) evaluation of B (Horner), every try O(1), every model two
-//! O(n) evaluations (B and B′ at its end), and every block of about 16 models one O(n²) de
+//! |B(t) − Cₖ(σ)| ≤ rₖ; each model ends where the next begins, at the same stored point. The
+//! points the march sends are the models' own points Vᵢ = C(tᵢ) (each within r of B(tᵢ)), with
+//! the curve's exact end points V₀ = P₀ = C(0) and Vₘ = Pₙ = C(1). For a chord over [a, b] it
+//! computes e ≥ the Hausdorff distance between the models' arc C([a, b]) and the segment
+//! [C(a), C(b)] (exact when the arc projects monotonically, see [`Window::bound`]), and
+//! accepts the chord when e + r ≤ tol with r = maxₖ rₖ over the models the chord spans.
+//!
+//! Bound: every curve point B(t), t ∈ [a, b], is within r of C(t), which is within e of the
+//! segment; every segment point q is within e of some C(t), which is within r of B(t). So the
+//! segment and B([a, b]) are within e + r ≤ tol of each other both ways, and the polyline and
+//! the curve too. (Before, the points sent were B(tᵢ) by Horner's rule, each within r of the
+//! models' point, and the test was e + 2r ≤ tol.)
+//!
+//! Cost: a point is O(1) (a point of a model), every try O(1) per model it spans, every model
+//! two O(n) evaluations (B and B′ at its end), and every block of about 16 models one O(n²) de
 //! Casteljau split.
 
 use bez_core::{HornerBernstein, Vector2, hodograph_slice};
@@ -21,9 +29,9 @@ use crate::stack_horner::{STACK_POINTS, StackHorner};
 
 /// The most segments one call places (2²⁰), as up to degree 3.
 const MAX_SEGMENTS: usize = crate::optimal::MAX_OPTIMAL_SEGMENTS;
-/// The models' remainder target as a fraction of the tolerance: 2r costs 1/32 of it, about
+/// The models' remainder target as a fraction of the tolerance: r costs 1/32 of it, about
 /// 1.6 % more segments.
-const MODEL_TARGET: f64 = 1.0 / 64.0;
+const MODEL_TARGET: f64 = 1.0 / 32.0;
 /// The most a model's remainder may be when rounding alone exceeds the target (tolerances near
 /// the rounding floor).
 const MODEL_CEILING: f64 = 0.25;
@@ -35,8 +43,10 @@ const EXTEND_BELOW: f64 = 0.92;
 const MAX_EXTENSIONS: usize = 2;
 
 /// Streams the points of `Method::Optimal` for a curve of degree ≥ 4 with control points `p`
-/// after B(0) (sent by the caller): every chord within `accept` of the curve, the last point
-/// Pₙ at t = 1. Returns the number of segments. Up to degree
+/// after B(0) (sent by the caller): every chord within `accept` of the curve, each point (t, C(t))
+/// a point of the models, within their remainder r of B(t) (r ≤ `accept` / 32, up to
+/// `accept` / 4 at tolerances near the rounding floor), the last point Pₙ at t = 1. Returns
+/// the number of segments. Up to degree
 /// [`MAX_STACK_DEGREE`](crate::MAX_STACK_DEGREE) nothing is allocated.
 ///
 /// # Errors
@@ -49,7 +59,6 @@ pub(crate) fn march_models(
     mut sink: impl FnMut(FlatPoint),
 ) -> Result<usize, SubdivError> {
     let len = p.len();
-    let n = (len - 1) as f64;
     let (origin, last) = (p[0], p[len - 1]);
     // The models and B are taken relative to P₀, so that their rounding follows the curve's
     // extent, not its distance from the origin; the points sent are P₀ + (B − P₀)(t).
@@ -58,30 +67,16 @@ pub(crate) fn march_models(
         point: if t >= 1.0 { last } else { origin + relative },
     };
     if len <= STACK_POINTS {
-        let mut buffers = [[Vector2::zeros(); STACK_POINTS]; 7];
-        let [
-            relative,
-            rest,
-            left,
-            right,
-            scaled,
-            hodograph,
-            scaled_hodograph,
-        ] = &mut buffers;
+        let mut buffers = [[Vector2::zeros(); STACK_POINTS]; 5];
+        let [relative, rest, left, right, scaled] = &mut buffers;
         for (r, &q) in relative.iter_mut().zip(p) {
             *r = q - origin;
         }
-        for (h, w) in hodograph.iter_mut().zip(p.windows(2)) {
-            *h = (w[1] - w[0]) * n;
-        }
         let relative = &relative[..len];
-        if let (Some(point), Some(tangent)) = (
-            StackHorner::new(relative, scaled),
-            StackHorner::new(&hodograph[..len - 1], scaled_hodograph),
-        ) {
+        if let Some(horner) = StackHorner::new(relative, scaled) {
             return march(
                 relative,
-                (|t| point.eval(t), |t| tangent.eval(t)),
+                |t| horner.jet(t),
                 [&mut rest[..len], &mut left[..len], &mut right[..len]],
                 accept,
                 max_depth,
@@ -100,10 +95,12 @@ pub(crate) fn march_models(
     let zero = Vector2::zeros();
     march(
         &relative,
-        (
-            |t| point.eval(t).unwrap_or(zero),
-            |t| tangent.eval(t).unwrap_or(zero),
-        ),
+        |t| {
+            (
+                point.eval(t).unwrap_or(zero),
+                tangent.eval(t).unwrap_or(zero),
+            )
+        },
         [rest, left, right],
         accept,
         max_depth,
@@ -112,15 +109,15 @@ pub(crate) fn march_models(
 }
 
 /// The models from the march's position on, in a ring of [`WINDOW`].
-struct Window<'a, E, D> {
-    stream: ModelStream<'a, E, D>,
+struct Window<'a, J> {
+    stream: ModelStream<'a, J>,
     models: [Model; WINDOW],
     front: usize,
     len: usize,
     done: bool,
 }
 
-impl<E: Fn(f64) -> Vector2, D: Fn(f64) -> Vector2> Window<'_, E, D> {
+impl<J: Fn(f64) -> (Vector2, Vector2)> Window<'_, J> {
     fn get(&self, k: usize) -> &Model {
         &self.models[(self.front + k) % WINDOW]
     }
@@ -165,8 +162,9 @@ impl<E: Fn(f64) -> Vector2, D: Fn(f64) -> Vector2> Window<'_, E, D> {
     /// Every arc point is within hypot(max |offset|, overshoot) of the chord (overshoot: how
     /// far the projection leaves [0, |d|]), and the continuous projection covers [0, |d|], so
     /// every chord point has an arc point at distance ≤ max |offset|: that is the Hausdorff
-    /// distance between arc and chord when the projection stays inside. Then add 2 maxₖ rₖ (the
-    /// curve and its chord are each within r of the models' arc and chord).
+    /// distance between arc and chord when the projection stays inside. (The cubics are taken
+    /// along d, |d| times these, and divided by |d| once.) Then add maxₖ rₖ (the
+    /// curve is within r of the models' arc, and the chord's ends are the models' points).
     fn bound(&self, ta: f64, pa: Vector2, tb: f64) -> (f64, Vector2) {
         let mut k = 0;
         while k + 1 < self.len && self.get(k).t1 < tb {
@@ -174,9 +172,14 @@ impl<E: Fn(f64) -> Vector2, D: Fn(f64) -> Vector2> Window<'_, E, D> {
         }
         let pb = self.get(k).point(tb);
         let d = pb - pa;
-        let len = d.norm();
-        let inverse_len = 1.0 / len;
-        let (mut offset, mut lo, mut hi, mut r) = (0.0_f64, 0.0_f64, len, 0.0_f64);
+        // Offsets and projections are taken along d itself (|d| times their values along the
+        // unit vector) and divided by |d| once at the end. Coordinates within 2^±129 keep
+        // their squares finite; for |d| below 1e-90 (far below any tolerance, ≥ 16 ulps of
+        // coordinates ≥ 2^−128) the distance to `pa` bounds the chord instead, so that what
+        // underflows in the cubics' discriminants is below 1e-200 after the division by |d|.
+        let len2 = d.dot(&d);
+        let projected = len2 >= 1e-180;
+        let (mut offset, mut lo, mut hi, mut r) = (0.0_f64, 0.0_f64, len2, 0.0_f64);
         for j in 0..=k {
             let m = self.get(j);
             if m.t1 <= ta {
@@ -185,12 +188,11 @@ impl<E: Fn(f64) -> Vector2, D: Fn(f64) -> Vector2> Window<'_, E, D> {
             r = r.max(m.r);
             let (s0, s1) = (m.sigma(ta.max(m.t0)), m.sigma(tb.min(m.t1)));
             let rel = m.p0 - pa;
-            if len > 0.0 {
-                let u = d * inverse_len;
-                let cross = [u.perp(&rel), u.perp(&m.a), u.perp(&m.b), u.perp(&m.c)];
+            if projected {
+                let cross = [d.perp(&rel), d.perp(&m.a), d.perp(&m.b), d.perp(&m.c)];
                 let (low, high) = cubic_range(cross, s0, s1);
                 offset = offset.max(high).max(-low);
-                let along = [u.dot(&rel), u.dot(&m.a), u.dot(&m.b), u.dot(&m.c)];
+                let along = [d.dot(&rel), d.dot(&m.a), d.dot(&m.b), d.dot(&m.c)];
                 if !increasing(along, s0, s1) {
                     let (low, high) = cubic_range(along, s0, s1);
                     lo = lo.min(low);
@@ -202,13 +204,19 @@ impl<E: Fn(f64) -> Vector2, D: Fn(f64) -> Vector2> Window<'_, E, D> {
                 offset = offset.max(reach);
             }
         }
-        let overshoot = (-lo).max(hi - len);
-        let e = if overshoot > 0.0 {
-            (offset * offset + overshoot * overshoot).sqrt()
+        let len = len2.sqrt();
+        let e = if projected {
+            let overshoot = (-lo).max(hi - len2);
+            if overshoot > 0.0 {
+                offset.hypot(overshoot) / len
+            } else {
+                offset / len
+            }
         } else {
-            offset
+            // Every chord point is within |d| of `pa`, a point of the arc.
+            offset.max(len)
         };
-        (e + 2.0 * r, pb)
+        (e + r, pb)
     }
 }
 
@@ -226,8 +234,9 @@ fn increasing(k: [f64; 4], s0: f64, s1: f64) -> bool {
 
 /// The least and greatest values of k₀ + k₁ s + k₂ s² + k₃ s³ over [s0, s1]: at the ends and at
 /// the roots of the derivative k₁ + 2k₂ s + 3k₃ s² inside (the cancellation-free pair q / A,
-/// C / q of the quadratic A s² + B s + C).
-#[inline]
+/// C / q of the quadratic A s² + B s + C). Inlined: it runs once or twice per model on every
+/// try.
+#[inline(always)]
 fn cubic_range(k: [f64; 4], s0: f64, s1: f64) -> (f64, f64) {
     let f = |s: f64| k[0] + s * (k[1] + s * (k[2] + s * k[3]));
     let (f0, f1) = (f(s0), f(s1));
@@ -257,11 +266,11 @@ fn cubic_range(k: [f64; 4], s0: f64, s1: f64) -> (f64, f64) {
     (lo, hi)
 }
 
-/// The march on the models of `p` (buffers for [`ModelStream`]) with `eval` for B, sending
-/// each point (t, B(t)) after the first to `sink`.
-fn march<E: Fn(f64) -> Vector2, D: Fn(f64) -> Vector2>(
+/// The march on the models of `p` (buffers for [`ModelStream`]) with `jet` for B and B′, sending
+/// each point (t, C(t)) after the first to `sink` (C the models, within r of B; C(1) = Pₙ).
+fn march<J: Fn(f64) -> (Vector2, Vector2)>(
     p: &[Vector2],
-    (eval, tangent): (E, D),
+    jet: J,
     buffers: [&mut [Vector2]; 3],
     accept: f64,
     max_depth: usize,
@@ -269,7 +278,7 @@ fn march<E: Fn(f64) -> Vector2, D: Fn(f64) -> Vector2>(
 ) -> Result<usize, SubdivError> {
     let stream = ModelStream::new(
         p,
-        (&eval, tangent),
+        jet,
         buffers,
         (accept * MODEL_TARGET, accept * MODEL_CEILING),
         max_depth,
@@ -296,6 +305,7 @@ fn march<E: Fn(f64) -> Vector2, D: Fn(f64) -> Vector2>(
     let (mut ta, mut pa) = (0.0_f64, p[0]);
     let mut step = first_step(window.get(0), accept);
     let mut segments = 0;
+    let mut previous = 0.0_f64;
     while ta < 1.0 {
         window.drop_before(ta);
         let mut best: Option<(f64, Vector2, f64)> = None;
@@ -350,11 +360,19 @@ fn march<E: Fn(f64) -> Vector2, D: Fn(f64) -> Vector2>(
                 limit: MAX_SEGMENTS,
             });
         }
-        sink(tb, if tb >= 1.0 { p[p.len() - 1] } else { eval(tb) });
-        // The next chord's first try: this one's length, rescaled to fill the tolerance.
+        sink(tb, pb);
+        // The next chord's first try: this one's length, rescaled to fill the tolerance and by
+        // the trend of the density √e / h from the chord before (within 0.8–1.25).
         let h = tb - ta;
+        let density = e.sqrt() / h;
+        let trend = if previous > 0.0 && density > 0.0 {
+            (density / previous).clamp(0.8, 1.25)
+        } else {
+            1.0
+        };
+        previous = density;
         step = if e > 0.0 {
-            h * (0.995 * (accept / e).sqrt()).clamp(0.5, 2.0)
+            h * (0.995 * (accept / e).sqrt() / trend).clamp(0.5, 2.0)
         } else {
             2.0 * h
         };
@@ -385,7 +403,75 @@ fn first_step(m: &Model, accept: f64) -> f64 {
 
 #[cfg(test)]
 mod tests {
+    #![allow(clippy::unwrap_used, reason = "tests fail loudly")]
+
+    use bez_core::proptest_support::curve;
+    use proptest::prelude::*;
+
     use super::*;
+
+    proptest! {
+        #![proptest_config(ProptestConfig::with_cases(64))]
+
+        /// Every point sent is a point of the models: within r ≤ accept / 32 of B(t) (de
+        /// Casteljau's point, an independent evaluation), the parameters increasing, the last
+        /// point Pₙ exactly at t = 1, and the count returned the number of points.
+        #[test]
+        fn points_are_within_the_remainder(c in curve::<2>(4..=30, 10.0), rel in 1e-5f64..1e-1) {
+            let size = c.points().iter().map(Vector2::amax).fold(1.0, f64::max);
+            let accept = rel * size;
+            let mut points = Vec::new();
+            let segments = march_models(c.points(), accept, 40, |q| points.push(q)).unwrap();
+            prop_assert_eq!(points.len(), segments);
+            let last = points.last().unwrap();
+            prop_assert_eq!((last.t, last.point), (1.0, c.end()));
+            let mut t = 0.0;
+            for q in &points {
+                prop_assert!(q.t > t);
+                t = q.t;
+                let error = (q.point - c.eval(q.t).unwrap()).norm();
+                prop_assert!(
+                    error <= MODEL_TARGET * accept + 1e-12 * size,
+                    "{} > {}", error, MODEL_TARGET * accept
+                );
+            }
+        }
+    }
+
+    /// The chord bound's cubics are taken along the unnormalized chord, whose squares must stay
+    /// finite and normal: a curve scaled by 2^±120 (near the range the flattener keeps
+    /// coordinates in) gives the same points, scaled, and stays within the tolerance.
+    #[test]
+    fn power_of_two_scaling_is_exact() {
+        let points: Vec<Vector2> = (0..=12)
+            .map(|i| {
+                let x = f64::from(i);
+                Vector2::new(x + (x * 1.7).sin(), ((i * 7) % 5) as f64 - 2.0)
+            })
+            .collect();
+        let curve = bez_core::BezierCurve::new(points.clone()).unwrap();
+        let accept = 1e-4 * crate::curve_size(&curve);
+        let mut reference = Vec::new();
+        march_models(&points, accept, 40, |q| reference.push(q)).unwrap();
+        for scale in [2.0_f64.powi(120), 2.0_f64.powi(-120)] {
+            let scaled: Vec<Vector2> = points.iter().map(|&p| p * scale).collect();
+            let mut out = Vec::new();
+            march_models(&scaled, accept * scale, 40, |q| out.push(q)).unwrap();
+            assert_eq!(out.len(), reference.len());
+            for (a, b) in out.iter().zip(&reference) {
+                assert_eq!((a.t, a.point), (b.t, b.point * scale));
+            }
+            let mut polyline = vec![scaled[0]];
+            polyline.extend(out.iter().map(|q| q.point));
+            let c = bez_core::BezierCurve::new(scaled).unwrap();
+            let sampling = crate::HausdorffSampling {
+                curve_samples: 4001,
+                segment_samples: 3,
+            };
+            let error = crate::measured_hausdorff(&c, &polyline, sampling).unwrap();
+            assert!(error <= accept * scale, "{}", error / (accept * scale));
+        }
+    }
 
     /// `cubic_range` against dense sampling, with extremes inside and outside the range.
     #[test]

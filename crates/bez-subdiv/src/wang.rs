@@ -147,6 +147,22 @@ struct UniformCount {
     forward: bool,
 }
 
+/// i⁴ (1 − 2⁻²⁰) for i = 0..=[`TABLE_COUNTS`] (exact in f64: at most 20 significant bits
+/// times 20): on the table path, forward differences need q (1 + 2⁻⁴⁶) at most this (see
+/// [`UniformCount::new`]).
+const ROOMY_FOURTH_POWERS: [f64; TABLE_COUNTS + 1] = {
+    let mut table = [0.0; TABLE_COUNTS + 1];
+    let mut i = 1;
+    while i <= TABLE_COUNTS {
+        table[i] = FOURTH_POWERS[i] * (1.0 - 1.0 / (1 << 20) as f64);
+        i += 1;
+    }
+    table
+};
+
+/// 2²¹: on the table path, forward differences need s ≤ 2²¹ tol (see [`UniformCount::new`]).
+const TABLE_SIZE_OVER_TOLERANCE: f64 = (1 << 21) as f64;
+
 impl UniformCount {
     /// From q, the fourth power of Wang's unrounded count as computed (see [`table_count`]),
     /// `size` the sum s of the absolute coordinates and the tolerance; `None` when q is not a
@@ -161,46 +177,58 @@ impl UniformCount {
     /// chord error: the chord of a parameter step 1/N deviates by at most √Q / N² × tol, and
     /// the steps taken, fl(1/N) and the last one 1 − (N − 1) fl(1/N), are longer than 1/N by a
     /// relative N u ≤ 2⁻²⁹ at most, which makes the chord bound at most (√Q / N² + 2⁻²⁶) tol
-    /// ([`CHORD_ROUNDING`]). Without a square root, √Q / N² ≤ √(q / N⁴) ≤ (1 + q / N⁴) / 2 =
-    /// 1 − (N⁴ − q) / (2N⁴) on the table path; above it √Q / N² ≤ (1 + 2u) r / N² with
-    /// r = fl(√q'). So with the slack num / den = (N⁴ − q) / (2N⁴) or (N² − r) / N², the test
-    /// 2 (E + 2⁻²⁶ tol) den ≤ tol num, evaluated in floating point (the factor 2 covers its
-    /// own rounding), ensures chord bound + E ≤ tol: the guarantee holds for the points as
-    /// computed. It fails only when the chord bound is within about 2⁻²⁵ tol of the
-    /// tolerance; then the points are evaluated.
+    /// ([`CHORD_ROUNDING`]). So forward differences keep the guarantee when
+    /// E + 2⁻²⁶ tol ≤ (1 − √Q / N²) tol, tested without a square root:
+    ///
+    /// - Up to [`TABLE_COUNTS`] segments, with two comparisons: q' ≤ N⁴ (1 − 2⁻²⁰)
+    ///   ([`ROOMY_FOURTH_POWERS`]) gives √Q / N² ≤ √(q' / N⁴) ≤ (1 + q' / N⁴) / 2 ≤ 1 − 2⁻²¹,
+    ///   and s ≤ 2²¹ tol ([`TABLE_SIZE_OVER_TOLERANCE`]) gives E ≤ 2⁻⁵⁰ s (32 + 64) < 2⁻⁴³ s
+    ///   ≤ 2⁻²² tol, and 2⁻²² + 2⁻²⁶ < 2⁻²¹ (the rounding of s, a few units of 2⁻⁵³, is
+    ///   inside that margin). It fails where the chord bound is within about 2⁻²¹ of the
+    ///   tolerance (a relative 2⁻²² of N), or for a tolerance below 2⁻²¹ s.
+    /// - Above, √Q / N² ≤ (1 + 2u) r / N² with r = fl(√q'). With the slack (N² − r) / N², the
+    ///   test 2 (E + 2⁻²⁶ tol) N² ≤ tol (N² − r), evaluated in floating point (the factor 2
+    ///   covers its own rounding), and E ≤ tol / 1024. It fails only where the chord bound is
+    ///   within about 2⁻²⁵ tol of the tolerance, or for a tolerance below about
+    ///   2⁻⁴⁰ s (N + 64).
+    ///
+    /// Where it fails, the points are evaluated.
     #[inline(always)]
     fn new(q: f64, size: f64, tolerance: f64) -> Option<Self> {
-        let (segments, step, num, den) = if let Some(n) = table_count(q) {
-            let n4 = FOURTH_POWERS[n];
-            (n, RECIPROCALS[n], n4 - q.abs() * ROUND_UP, 2.0 * n4)
+        if let Some(n) = table_count(q) {
+            let forward = q.abs() * ROUND_UP <= ROOMY_FOURTH_POWERS[n]
+                && size <= TABLE_SIZE_OVER_TOLERANCE * tolerance;
+            return Some(Self {
+                segments: n,
+                step: RECIPROCALS[n],
+                forward,
+            });
+        }
+        let q = q.abs() * ROUND_UP;
+        if q.is_nan() || q > MAX_FOURTH_POWER {
+            return None;
+        }
+        let r = q.sqrt();
+        let steps = r.sqrt();
+        // 0 < steps ≤ 2²⁴: the truncation is exact, and so is its conversion back.
+        #[allow(
+            clippy::cast_possible_truncation,
+            clippy::cast_sign_loss,
+            reason = "0 < steps <= 2^24"
+        )]
+        let whole = steps as usize;
+        let segments = if (whole as f64) < steps {
+            whole + 1
         } else {
-            let q = q.abs() * ROUND_UP;
-            if q.is_nan() || q > MAX_FOURTH_POWER {
-                return None;
-            }
-            let r = q.sqrt();
-            let steps = r.sqrt();
-            // 0 < steps ≤ 2²⁴: the truncation is exact, and so is its conversion back.
-            #[allow(
-                clippy::cast_possible_truncation,
-                clippy::cast_sign_loss,
-                reason = "0 < steps <= 2^24"
-            )]
-            let whole = steps as usize;
-            let n = if (whole as f64) < steps {
-                whole + 1
-            } else {
-                whole
-            };
-            let n2 = (n * n) as f64;
-            (n, 1.0 / n as f64, n2 - r, n2)
+            whole
         };
+        let n2 = (segments * segments) as f64;
         let allowance = rounding_allowance(size, segments as f64);
         let forward = allowance <= MAX_ROUNDING_SHARE * tolerance
-            && 2.0 * (allowance + CHORD_ROUNDING * tolerance) * den <= tolerance * num;
+            && 2.0 * (allowance + CHORD_ROUNDING * tolerance) * n2 <= tolerance * (n2 - r);
         Some(Self {
             segments,
-            step,
+            step: 1.0 / segments as f64,
             forward,
         })
     }
@@ -210,7 +238,7 @@ impl UniformCount {
 /// up to [`TABLE_COUNTS`] segments: Wang's count by [`UniformCount`] (q = (n(n − 1)/8 · |d| /
 /// tol)² with d the largest second difference), then the points by forward differences
 /// ([`forward_difference`](crate::forward_difference), two or three vector additions per
-/// point) where their rounding fits in the tolerance (always, in practice), otherwise by
+/// point) where their rounding fits in the tolerance (on usual input), otherwise by
 /// Horner's rule on the power form relative to P₀. Returns `None` before sending any point
 /// when the curve is not a quadratic or a cubic, the tolerance is not a normal positive
 /// number, the curve is not surely of unit size ([`unit_size_sum`]) or the count is above
@@ -482,6 +510,10 @@ mod tests {
             (1_024.0_f64.powi(4) / (1.0 + 1e-12), 4.0, 1e-3, false),
             (16.0_f64.powi(4), 4.0, 1e-3, true),
             (20.0_f64.powi(4) * (1.0 - 1e-9), 4.0, 1e-3, false),
+            (20.0_f64.powi(4) * (1.0 - 1e-5), 4.0, 1e-3, true),
+            // Up to 32 segments, a tolerance below 2⁻²¹ s: evaluated.
+            (20.5_f64.powi(4), 1e4, 1e-3, false),
+            (400.5_f64.powi(4), 1e4, 1e-3, true),
         ] {
             let count = UniformCount::new(q, size, tol).unwrap();
             assert_eq!(count.forward, forward, "{q} {size} {tol}");

@@ -70,17 +70,33 @@ pub(crate) fn table_count(q: f64) -> Option<usize> {
     Some(count_from_fourth_power(q))
 }
 
-/// 3 · 1023 · 2⁵⁰: with it, the bits of q shifted right by two are the bits of an estimate y of
-/// q^¼ (the exponent divided by 4, the mantissa in between), y = 1 at q = 1.
-const QUARTER_ROOT_BIAS: u64 = (3 * 1023) << 50;
+/// The buckets of [`first_guess`]: q in [1, 2²¹) split by its binary exponent and the two
+/// leading bits of its mantissa (80 buckets up to [`TABLE_COUNTS`]⁴ = 2²⁰, one more for 2²⁰).
+const BUCKETS: usize = 81;
+
+/// For each bucket m of [`first_guess`], the count of its smallest q,
+/// L = 2^⌊m/4⌋ (1 + (m mod 4)/4): the smallest i ≥ 1 with L ≤ i⁴ (exact in f64).
+const FIRST_COUNTS: [u8; BUCKETS] = {
+    let mut table = [0; BUCKETS];
+    let mut m = 0;
+    while m < BUCKETS {
+        let low = (1_u64 << (m / 4)) as f64 * (1.0 + (m % 4) as f64 / 4.0);
+        let mut i = 1;
+        while FOURTH_POWERS[i] < low {
+            i += 1;
+        }
+        table[m] = i as u8;
+        m += 1;
+    }
+    table
+};
 
 /// The smallest i ≥ 1 with q ≤ i⁴, for 0 ≤ q ≤ [`TABLE_COUNTS`]⁴, without a search or a
-/// data-dependent branch: a first guess b from the bits of q (see [`QUARTER_ROOT_BIAS`];
-/// b = ⌊0.94 y⌋, y ≥ q^¼ ≥ 0.94 y for positive normal q), then b plus the number of i⁴ among
-/// b⁴, …, (b + 3)⁴ that q exceeds ([`FOURTH_POWERS`]), which is the count whenever
-/// b ≤ count ≤ b + 4. That holds on all of [0, [`TABLE_COUNTS`]⁴]: b is a non-decreasing
-/// function of q (the bits of a non-negative f64 grow with it, and every later step is
-/// monotone), so on each interval ((i − 1)⁴, i⁴] of count i it is enough that b ≤ i at its top
+/// data-dependent branch: a first guess b from the bits of q ([`first_guess`]), then b plus
+/// the number of i⁴ among b⁴, …, (b + 3)⁴ that q exceeds ([`FOURTH_POWERS`]), which is the
+/// count whenever b ≤ count ≤ b + 4. That holds on all of [0, [`TABLE_COUNTS`]⁴]: b is a
+/// non-decreasing function of q (the bits of a non-negative f64 grow with it, and the table
+/// grows), so on each interval ((i − 1)⁴, i⁴] of count i it is enough that b ≤ i at its top
 /// and b ≥ i − 4 just above its bottom, which a test checks for every i.
 #[inline(always)]
 fn count_from_fourth_power(q: f64) -> usize {
@@ -90,18 +106,20 @@ fn count_from_fourth_power(q: f64) -> usize {
         .sum::<usize>()
 }
 
-/// ⌊0.94 y⌋ for the estimate y of q^¼ of [`QUARTER_ROOT_BIAS`], at most [`TABLE_COUNTS`] − 1.
+/// The count of the smallest q of q's bucket ([`FIRST_COUNTS`]): the bucket is the biased
+/// binary exponent of q times four plus the two leading bits of its mantissa, counted from
+/// q = 1 (below 1, the first bucket, count 1). Integer operations and one table read.
 #[inline(always)]
 fn first_guess(q: f64) -> usize {
-    let y = f64::from_bits((q.to_bits() >> 2) + QUARTER_ROOT_BIAS);
-    // Saturating conversion; the bound keeps the indices in the table for any input.
+    // The bits of a non-negative f64 shifted right by 50: 4 × biased exponent + two bits.
     #[allow(
         clippy::cast_possible_truncation,
-        clippy::cast_sign_loss,
-        reason = "0 ≤ 0.94 y < 32 on the range, saturating outside"
+        reason = "a 14-bit value after the shift"
     )]
-    let base = (0.94 * y) as usize;
-    base.min(TABLE_COUNTS - 1)
+    let bucket = ((q.to_bits() >> 50) as usize)
+        .saturating_sub(4 * 1023)
+        .min(BUCKETS - 1);
+    usize::from(FIRST_COUNTS[bucket]).min(TABLE_COUNTS)
 }
 
 /// 2^±128: [`flatten_wang_small`] runs where the largest coordinate is surely within the range

@@ -34,6 +34,8 @@ fn rules(c: &mut Criterion) {
 #[derive(Clone, Copy)]
 enum Peer {
     Bezkit(Method),
+    /// `Method::Fast` fixed at compile time (`Flattener::new`), as a caller writes it.
+    Fast,
     /// kurbo's `flatten` of a one-curve path.
     Kurbo,
     /// lyon_geom's `for_each_flattened` (quadratic or cubic segment).
@@ -56,6 +58,9 @@ fn polyline(
             let flattener = Flattener::new(tol).with_method(method);
             // The benchmarked curves are valid: an error sends no point and counts none.
             let _ = flattener.flatten(curve, |q| out.push(q.point));
+        }
+        Peer::Fast => {
+            let _ = Flattener::new(tol).flatten(curve, |q| out.push(q.point));
         }
         Peer::Kurbo => kurbo::flatten(path, tol, |el| {
             if let kurbo::PathEl::MoveTo(q) | kurbo::PathEl::LineTo(q) = el {
@@ -105,7 +110,7 @@ fn compare(
     let mut wang = Vec::new();
     for &(label, peer) in peers {
         let segments = polyline(peer, curve, &path, tol, &mut out);
-        if matches!(peer, Peer::Bezkit(Method::Fast) | Peer::Lyon) {
+        if matches!(peer, Peer::Fast | Peer::Lyon) {
             wang.push(segments);
         }
         g.throughput(Throughput::Elements(segments as u64));
@@ -142,7 +147,7 @@ fn versus_peers(c: &mut Criterion) {
         let tol = 1e-5 * bez_subdiv::curve_size(&curve);
         let peers = [
             ("kurbo flatten", Peer::Kurbo),
-            ("bezkit Method::Fast", Peer::Bezkit(Method::Fast)),
+            ("bezkit Method::Fast", Peer::Fast),
             ("lyon_geom for_each_flattened", Peer::Lyon),
         ];
         compare(&mut g, &name, &curve, tol, &peers);
@@ -157,7 +162,7 @@ fn flattener_versus_peers(c: &mut Criterion) {
     let mut g = c.benchmark_group("flattener_vs_peers");
     let peers = [
         ("bezkit Optimal", Peer::Bezkit(Method::Optimal)),
-        ("bezkit Fast", Peer::Bezkit(Method::Fast)),
+        ("bezkit Fast", Peer::Fast),
         ("kurbo flatten", Peer::Kurbo),
         ("lyon_geom for_each_flattened", Peer::Lyon),
     ];
@@ -174,7 +179,7 @@ fn flattener_versus_peers(c: &mut Criterion) {
 fn quadratics_versus_lyon(c: &mut Criterion) {
     let mut g = c.benchmark_group("quadratic_flatten_vs_lyon");
     let peers = [
-        ("bezkit Method::Fast", Peer::Bezkit(Method::Fast)),
+        ("bezkit Method::Fast", Peer::Fast),
         ("lyon_geom for_each_flattened", Peer::Lyon),
     ];
     for seed in 1..=3_u64 {

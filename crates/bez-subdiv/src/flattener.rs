@@ -29,11 +29,14 @@ pub enum Method {
     /// points ([`wang_segment_count`](crate::wang_segment_count)): the chord of a parameter step h
     /// interpolates B within h²/8 · max|B″| and |B″| ≤ n(n − 1) M. lyon_geom's count for
     /// quadratics and cubics; no subdivision, no allocation; O(1) per point up to degree 3
-    /// (the power form), O(n) above. At most [`MAX_WANG_SEGMENTS`](crate::MAX_WANG_SEGMENTS)
+    /// (forward differences, two or three vector additions per point, where their rounding
+    /// error, at most 2⁻⁵⁰ s (N + 64) for the sum s of the absolute coordinates, fits in the
+    /// tolerance beside the chord error and below tol / 1024, which up to 32 segments is
+    /// checked as tol ≥ 2⁻²¹ s; otherwise the power form), O(n) above. At most [`MAX_WANG_SEGMENTS`](crate::MAX_WANG_SEGMENTS)
     /// segments, checked before the first point. On quadratics and cubics needing at most 32
-    /// segments, N is read from a table of fourth powers (no square root); it rounds up, so it
-    /// is one more than the formula where the formula's value is within about 2⁻⁴⁸ of a whole
-    /// number.
+    /// segments, N is read from a table of fourth powers (no square root), above from two
+    /// square roots of its fourth power; it rounds up, so it is one more than the formula where
+    /// the formula's value is within a relative 2⁻⁴⁵ or so of a whole number.
     #[default]
     Fast,
     /// Wang's bound piece by piece: the curve is halved (de Casteljau at ½) until a piece needs
@@ -148,8 +151,8 @@ impl Flattener {
         mut sink: impl FnMut(FlatPoint),
     ) -> Result<usize, SubdivError> {
         let bezier = curve.as_bezier();
-        // `Fast` on a quadratic or a cubic of usual size: no square root and no dynamic
-        // dispatch before the points (`None`, nothing sent, when the general path decides).
+        // `Fast` on a quadratic or a cubic of usual size: no dynamic dispatch and, up to 32
+        // segments, no square root before the points (`None`, nothing sent, when the general path decides).
         if let Method::Fast = self.method
             && let Some(n) = flatten_wang_small(bezier.points(), self.tolerance, &mut sink)
         {

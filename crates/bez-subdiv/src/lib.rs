@@ -71,6 +71,7 @@ mod fixed;
 )]
 mod flatten;
 mod flattener;
+mod forward_difference;
 mod guaranteed;
 mod hausdorff;
 mod limits;

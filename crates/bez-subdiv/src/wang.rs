@@ -5,6 +5,7 @@ use bez_core::{BezierForm, HornerBernstein, Vector2};
 
 use crate::bound::wang_count;
 use crate::error::SubdivError;
+use crate::forward_difference::{self, rounding_allowance};
 use crate::guaranteed::FlatPoint;
 use crate::stack_horner::{STACK_POINTS, StackHorner};
 
@@ -13,7 +14,7 @@ use crate::stack_horner::{STACK_POINTS, StackHorner};
 pub const MAX_WANG_SEGMENTS: usize = 1 << 24;
 
 /// The largest count that [`flatten_wang_small`] reads from [`FOURTH_POWERS`]; larger counts
-/// take the general path (two square roots, amortized over more than 32 points).
+/// take two square roots (amortized over more than 32 points), see [`UniformCount::new`].
 const TABLE_COUNTS: usize = 32;
 
 /// i⁴ for i = 0..[`TABLE_COUNTS`] + 4, exact in f64, except entry 0, −1 (every q ≥ 0 is above
@@ -69,17 +70,33 @@ pub(crate) fn table_count(q: f64) -> Option<usize> {
     Some(count_from_fourth_power(q))
 }
 
-/// 3 · 1023 · 2⁵⁰: with it, the bits of q shifted right by two are the bits of an estimate y of
-/// q^¼ (the exponent divided by 4, the mantissa in between), y = 1 at q = 1.
-const QUARTER_ROOT_BIAS: u64 = (3 * 1023) << 50;
+/// The buckets of [`first_guess`]: q in [1, 2²¹) split by its binary exponent and the two
+/// leading bits of its mantissa (80 buckets up to [`TABLE_COUNTS`]⁴ = 2²⁰, one more for 2²⁰).
+const BUCKETS: usize = 81;
+
+/// For each bucket m of [`first_guess`], the count of its smallest q,
+/// L = 2^⌊m/4⌋ (1 + (m mod 4)/4): the smallest i ≥ 1 with L ≤ i⁴ (exact in f64).
+const FIRST_COUNTS: [u8; BUCKETS] = {
+    let mut table = [0; BUCKETS];
+    let mut m = 0;
+    while m < BUCKETS {
+        let low = (1_u64 << (m / 4)) as f64 * (1.0 + (m % 4) as f64 / 4.0);
+        let mut i = 1;
+        while FOURTH_POWERS[i] < low {
+            i += 1;
+        }
+        table[m] = i as u8;
+        m += 1;
+    }
+    table
+};
 
 /// The smallest i ≥ 1 with q ≤ i⁴, for 0 ≤ q ≤ [`TABLE_COUNTS`]⁴, without a search or a
-/// data-dependent branch: a first guess b from the bits of q (see [`QUARTER_ROOT_BIAS`];
-/// b = ⌊0.94 y⌋, y ≥ q^¼ ≥ 0.94 y for positive normal q), then b plus the number of i⁴ among
-/// b⁴, …, (b + 3)⁴ that q exceeds ([`FOURTH_POWERS`]), which is the count whenever
-/// b ≤ count ≤ b + 4. That holds on all of [0, [`TABLE_COUNTS`]⁴]: b is a non-decreasing
-/// function of q (the bits of a non-negative f64 grow with it, and every later step is
-/// monotone), so on each interval ((i − 1)⁴, i⁴] of count i it is enough that b ≤ i at its top
+/// data-dependent branch: a first guess b from the bits of q ([`first_guess`]), then b plus
+/// the number of i⁴ among b⁴, …, (b + 3)⁴ that q exceeds ([`FOURTH_POWERS`]), which is the
+/// count whenever b ≤ count ≤ b + 4. That holds on all of [0, [`TABLE_COUNTS`]⁴]: b is a
+/// non-decreasing function of q (the bits of a non-negative f64 grow with it, and the table
+/// grows), so on each interval ((i − 1)⁴, i⁴] of count i it is enough that b ≤ i at its top
 /// and b ≥ i − 4 just above its bottom, which a test checks for every i.
 #[inline(always)]
 fn count_from_fourth_power(q: f64) -> usize {
@@ -89,18 +106,20 @@ fn count_from_fourth_power(q: f64) -> usize {
         .sum::<usize>()
 }
 
-/// ⌊0.94 y⌋ for the estimate y of q^¼ of [`QUARTER_ROOT_BIAS`], at most [`TABLE_COUNTS`] − 1.
+/// The count of the smallest q of q's bucket ([`FIRST_COUNTS`]): the bucket is the biased
+/// binary exponent of q times four plus the two leading bits of its mantissa, counted from
+/// q = 1 (below 1, the first bucket, count 1). Integer operations and one table read.
 #[inline(always)]
 fn first_guess(q: f64) -> usize {
-    let y = f64::from_bits((q.to_bits() >> 2) + QUARTER_ROOT_BIAS);
-    // Saturating conversion; the bound keeps the indices in the table for any input.
+    // The bits of a non-negative f64 shifted right by 50: 4 × biased exponent + two bits.
     #[allow(
         clippy::cast_possible_truncation,
-        clippy::cast_sign_loss,
-        reason = "0 ≤ 0.94 y < 32 on the range, saturating outside"
+        reason = "a 14-bit value after the shift"
     )]
-    let base = (0.94 * y) as usize;
-    base.min(TABLE_COUNTS - 1)
+    let bucket = ((q.to_bits() >> 50) as usize)
+        .saturating_sub(4 * 1023)
+        .min(BUCKETS - 1);
+    usize::from(FIRST_COUNTS[bucket]).min(TABLE_COUNTS)
 }
 
 /// 2^±128: [`flatten_wang_small`] runs where the largest coordinate is surely within the range
@@ -108,24 +127,141 @@ fn first_guess(q: f64) -> usize {
 const UNIT_LOW: f64 = 1.0 / UNIT_HIGH;
 const UNIT_HIGH: f64 = 340_282_366_920_938_463_463_374_607_431_768_211_456.0;
 
-/// Whether the sum s of the absolute coordinates of `points` lies in [2k · 2⁻¹²⁸, 2¹²⁸]
+/// The sum s of the absolute coordinates of `points` when it lies in [2k · 2⁻¹²⁸, 2¹²⁸]
 /// (k points): then the largest coordinate m, with s / 2k ≤ m ≤ s, lies within 2^±128, the
 /// range in which `Flattener` flattens a curve as it is. One sum and one range test instead of
-/// a maximum (a NaN or infinite coordinate fails it too).
+/// a maximum (a NaN or infinite coordinate fails it too). s is also the size in the rounding
+/// bound of the forward differences ([`rounding_allowance`]).
 #[inline(always)]
-fn surely_unit_size<const K: usize>(points: &[Vector2; K]) -> bool {
+fn unit_size_sum<const K: usize>(points: &[Vector2; K]) -> Option<f64> {
     let sum = points.iter().fold(Vector2::zeros(), |acc, p| acc + p.abs());
-    (2.0 * K as f64 * UNIT_LOW..=UNIT_HIGH).contains(&(sum.x() + sum.y()))
+    let sum = sum.x() + sum.y();
+    (2.0 * K as f64 * UNIT_LOW..=UNIT_HIGH)
+        .contains(&sum)
+        .then_some(sum)
 }
 
-/// `Method::Fast` on a quadratic or a cubic without a square root or a data-dependent branch
-/// before the points: Wang's count from [`table_count`] (q = (n(n − 1)/8 · |d| / tol)²
-/// with d the largest second difference), the step 1/N from [`RECIPROCALS`], then Horner's
-/// rule on the power form relative to P₀. Returns `None` before sending any point when the
-/// curve is not a quadratic or a cubic, the tolerance is not a normal positive number, the
-/// curve is not surely of unit size ([`surely_unit_size`]) or the count is above
-/// [`TABLE_COUNTS`]: [`flatten_wang`] then decides (the same points, up to a count one higher
-/// here at exact boundaries, see [`table_count`]).
+/// (2²⁴)⁴ = 2⁹⁶: the fourth power of [`MAX_WANG_SEGMENTS`]; above it [`flatten_wang`] decides
+/// (and refuses the count).
+const MAX_FOURTH_POWER: f64 = 79_228_162_514_264_337_593_543_950_336.0;
+
+/// The share of the tolerance that the rounding of the forward differences may take at most
+/// (2⁻¹⁰): above it, that is where the tolerance is below about 2⁻⁴⁰ s / (N + 64), the points
+/// are evaluated one by one.
+const MAX_ROUNDING_SHARE: f64 = 1.0 / 1024.0;
+
+/// 2⁻²⁶: the relative enlargement of the chord bound by the rounding of the count and of the
+/// step (see [`UniformCount::new`]).
+const CHORD_ROUNDING: f64 = 1.0 / (1_u64 << 26) as f64;
+
+/// Wang's count of [`flatten_wang_small`], its step, and whether the points may be computed by
+/// forward differences.
+struct UniformCount {
+    /// N.
+    segments: usize,
+    /// fl(1/N).
+    step: f64,
+    /// Whether the rounding allowance of the forward differences fits beside the chord error.
+    forward: bool,
+}
+
+/// i⁴ (1 − 2⁻²⁰) for i = 0..=[`TABLE_COUNTS`] (exact in f64: at most 20 significant bits
+/// times 20): on the table path, forward differences need q (1 + 2⁻⁴⁶) at most this (see
+/// [`UniformCount::new`]).
+const ROOMY_FOURTH_POWERS: [f64; TABLE_COUNTS + 1] = {
+    let mut table = [0.0; TABLE_COUNTS + 1];
+    let mut i = 1;
+    while i <= TABLE_COUNTS {
+        table[i] = FOURTH_POWERS[i] * (1.0 - 1.0 / (1 << 20) as f64);
+        i += 1;
+    }
+    table
+};
+
+/// 2²¹: on the table path, forward differences need s ≤ 2²¹ tol (see [`UniformCount::new`]).
+const TABLE_SIZE_OVER_TOLERANCE: f64 = (1 << 21) as f64;
+
+impl UniformCount {
+    /// From q, the fourth power of Wang's unrounded count as computed (see [`table_count`]),
+    /// `size` the sum s of the absolute coordinates and the tolerance; `None` when q is not a
+    /// number or the count is above [`MAX_WANG_SEGMENTS`].
+    ///
+    /// N: up to [`TABLE_COUNTS`] by [`table_count`] (no square root); above, ⌈q'^¼⌉ by two
+    /// square roots of q' = q (1 + 2⁻⁴⁶), which is above the exact fourth power Q by a relative
+    /// 2⁻⁴⁷ at least and so stays above it through the two roundings: N ≥ ⌈Q^¼⌉ on both paths.
+    ///
+    /// Forward differences are allowed when their rounding allowance E
+    /// ([`rounding_allowance`]) is at most [`MAX_ROUNDING_SHARE`] × tol and fits beside the
+    /// chord error: the chord of a parameter step 1/N deviates by at most √Q / N² × tol, and
+    /// the steps taken, fl(1/N) and the last one 1 − (N − 1) fl(1/N), are longer than 1/N by a
+    /// relative N u ≤ 2⁻²⁹ at most, which makes the chord bound at most (√Q / N² + 2⁻²⁶) tol
+    /// ([`CHORD_ROUNDING`]). So forward differences keep the guarantee when
+    /// E + 2⁻²⁶ tol ≤ (1 − √Q / N²) tol, tested without a square root:
+    ///
+    /// - Up to [`TABLE_COUNTS`] segments, with two comparisons: q' ≤ N⁴ (1 − 2⁻²⁰)
+    ///   ([`ROOMY_FOURTH_POWERS`]) gives √Q / N² ≤ √(q' / N⁴) ≤ (1 + q' / N⁴) / 2 ≤ 1 − 2⁻²¹,
+    ///   and s ≤ 2²¹ tol ([`TABLE_SIZE_OVER_TOLERANCE`]) gives E ≤ 2⁻⁵⁰ s (32 + 64) < 2⁻⁴³ s
+    ///   ≤ 2⁻²² tol, and 2⁻²² + 2⁻²⁶ < 2⁻²¹ (the rounding of s, a few units of 2⁻⁵³, is
+    ///   inside that margin). It fails where the chord bound is within about 2⁻²¹ of the
+    ///   tolerance (a relative 2⁻²² of N), or for a tolerance below 2⁻²¹ s.
+    /// - Above, √Q / N² ≤ (1 + 2u) r / N² with r = fl(√q'). With the slack (N² − r) / N², the
+    ///   test 2 (E + 2⁻²⁶ tol) N² ≤ tol (N² − r), evaluated in floating point (the factor 2
+    ///   covers its own rounding), and E ≤ tol / 1024. It fails only where the chord bound is
+    ///   within about 2⁻²⁵ tol of the tolerance, or for a tolerance below about
+    ///   2⁻⁴⁰ s (N + 64).
+    ///
+    /// Where it fails, the points are evaluated.
+    #[inline(always)]
+    fn new(q: f64, size: f64, tolerance: f64) -> Option<Self> {
+        if let Some(n) = table_count(q) {
+            let forward = q.abs() * ROUND_UP <= ROOMY_FOURTH_POWERS[n]
+                && size <= TABLE_SIZE_OVER_TOLERANCE * tolerance;
+            return Some(Self {
+                segments: n,
+                step: RECIPROCALS[n],
+                forward,
+            });
+        }
+        let q = q.abs() * ROUND_UP;
+        if q.is_nan() || q > MAX_FOURTH_POWER {
+            return None;
+        }
+        let r = q.sqrt();
+        let steps = r.sqrt();
+        // 0 < steps ≤ 2²⁴: the truncation is exact, and so is its conversion back.
+        #[allow(
+            clippy::cast_possible_truncation,
+            clippy::cast_sign_loss,
+            reason = "0 < steps <= 2^24"
+        )]
+        let whole = steps as usize;
+        let segments = if (whole as f64) < steps {
+            whole + 1
+        } else {
+            whole
+        };
+        let n2 = (segments * segments) as f64;
+        let allowance = rounding_allowance(size, segments as f64);
+        let forward = allowance <= MAX_ROUNDING_SHARE * tolerance
+            && 2.0 * (allowance + CHORD_ROUNDING * tolerance) * n2 <= tolerance * (n2 - r);
+        Some(Self {
+            segments,
+            step: 1.0 / segments as f64,
+            forward,
+        })
+    }
+}
+
+/// `Method::Fast` on a quadratic or a cubic without a data-dependent branch before the points
+/// up to [`TABLE_COUNTS`] segments: Wang's count by [`UniformCount`] (q = (n(n − 1)/8 · |d| /
+/// tol)² with d the largest second difference), then the points by forward differences
+/// ([`forward_difference`](crate::forward_difference), two or three vector additions per
+/// point) where their rounding fits in the tolerance (on usual input), otherwise by
+/// Horner's rule on the power form relative to P₀. Returns `None` before sending any point
+/// when the curve is not a quadratic or a cubic, the tolerance is not a normal positive
+/// number, the curve is not surely of unit size ([`unit_size_sum`]) or the count is above
+/// [`MAX_WANG_SEGMENTS`]: [`flatten_wang`] then decides (the same count, up to one more here
+/// at exact boundaries, see [`table_count`]).
 #[inline(always)]
 pub(crate) fn flatten_wang_small(
     points: &[Vector2],
@@ -137,36 +273,36 @@ pub(crate) fn flatten_wang_small(
     }
     match *points {
         [p0, p1, p2] => {
-            if !surely_unit_size(&[p0, p1, p2]) {
-                return None;
-            }
+            let size = unit_size_sum(&[p0, p1, p2])?;
             // B(t) = P₀ + t (a + t d), a = 2(P₁ − P₀), d = P₀ − 2P₁ + P₂; n(n − 1)/8 = 1/4.
             let d = p0 - p1 * 2.0 + p2;
-            let n = table_count((d * (0.25 / tolerance)).norm_squared())?;
+            let count =
+                UniformCount::new((d * (0.25 / tolerance)).norm_squared(), size, tolerance)?;
+            let (n, h) = (count.segments, count.step);
             let a = (p1 - p0) * 2.0;
-            Some(uniform(
-                n,
-                RECIPROCALS[n],
-                p0,
-                p2,
-                |t| p0 + (a + d * t) * t,
-                sink,
-            ))
+            Some(if count.forward {
+                forward_difference::quadratic([p0, a, d], p2, n, h, sink)
+            } else {
+                uniform(n, h, p0, p2, |t| p0 + (a + d * t) * t, sink)
+            })
         }
         [p0, p1, p2, p3] => {
-            if !surely_unit_size(&[p0, p1, p2, p3]) {
-                return None;
-            }
+            let size = unit_size_sum(&[p0, p1, p2, p3])?;
             // B(t) = P₀ + t (a + t (b + t c)), a = 3(P₁ − P₀), b = 3 d₀, c = d₁ − d₀ with the
             // second differences d₀ = P₀ − 2P₁ + P₂, d₁ = P₁ − 2P₂ + P₃; n(n − 1)/8 = 3/4.
             let (d0, d1) = (p0 - p1 * 2.0 + p2, p1 - p2 * 2.0 + p3);
             let k = 0.75 / tolerance;
             let (q0, q1) = ((d0 * k).norm_squared(), (d1 * k).norm_squared());
-            let n = table_count(if q0 > q1 { q0 } else { q1 })?;
+            let count = UniformCount::new(if q0 > q1 { q0 } else { q1 }, size, tolerance)?;
+            let (n, h) = (count.segments, count.step);
             let (a, b, c) = ((p1 - p0) * 3.0, d0 * 3.0, d1 - d0);
-            // (P₀ + a t) + (b + c t) t²: two short chains instead of Horner's one long one.
-            let eval = |t: f64| (p0 + a * t) + (b + c * t) * (t * t);
-            Some(uniform(n, RECIPROCALS[n], p0, p3, eval, sink))
+            Some(if count.forward {
+                forward_difference::cubic([p0, a, b, c], p3, n, h, sink)
+            } else {
+                // (P₀ + a t) + (b + c t) t²: two short chains instead of Horner's one long one.
+                let eval = |t: f64| (p0 + a * t) + (b + c * t) * (t * t);
+                uniform(n, h, p0, p3, eval, sink)
+            })
         }
         _ => None,
     }
@@ -181,8 +317,9 @@ pub(crate) fn flatten_wang_small(
 /// h²/8 · max|B''| and |B''| ≤ n(n − 1) M. The same count as lyon_geom's
 /// `for_each_flattened` for quadratics and cubics (about twice the optimal count on curved
 /// pieces; `Method::Optimal` places about half as many);
-/// no subdivision, no allocation. Points: up to degree 3 by Horner's rule on the power form
-/// relative to P₀ (a few multiply-adds per point, and a translation of the curve changes
+/// no subdivision, no allocation. (`Flattener` sends quadratics and cubics of usual size to
+/// [`flatten_wang_small`] first, which computes the points by forward differences.) Points
+/// here: up to degree 3 by Horner's rule on the power form relative to P₀ (a few multiply-adds per point, and a translation of the curve changes
 /// nothing but the added P₀); above, by [`HornerBernstein`], O(n) per point. The first and
 /// last points are P₀ and Pₙ exactly.
 ///
@@ -335,6 +472,75 @@ mod tests {
                 prop_assert!((p.point - c.eval(p.t).unwrap()).norm() <= 1e-12 * (1.0 + crate::curve_size(&c)));
             }
         }
+    }
+
+    proptest! {
+        #![proptest_config(ProptestConfig::with_cases(64))]
+
+        /// `Method::Fast` on quadratics and cubics (forward differences), near the origin and
+        /// translated far from it: the measured two-sided Hausdorff distance stays within the
+        /// tolerance, the count is Wang's (one more only at an exact boundary), and every
+        /// point is within the rounding allowance of the curve point at its parameter.
+        #[test]
+        fn forward_differences_are_within_tolerance(
+            c in curve::<2>(2..=3, 10.0),
+            rel in 1e-5f64..1e-1,
+            offset in prop_oneof![Just(0.0), -1e4f64..1e4],
+        ) {
+            let c = BezierCurve::new(
+                c.points().iter().map(|&p| p + Vector2::new(offset, -offset)).collect(),
+            ).unwrap();
+            let tol = rel * crate::curve_size(&c).max(1e-3);
+            let mut pts = Vec::new();
+            let n = crate::Flattener::new(tol).flatten(&c, |p| pts.push(p)).unwrap();
+            let wang = crate::wang_segment_count(&c, tol).unwrap();
+            prop_assert!(n == wang || n == wang + 1, "{n} vs {wang}");
+            prop_assert_eq!(pts.len(), n + 1);
+            prop_assert_eq!((pts[0].point, pts[n].point), (c.start(), c.end()));
+            let size: f64 = c.points().iter().map(|p| p.x().abs() + p.y().abs()).sum();
+            // The allowance, and the evaluation's own rounding at fl(k h) instead of k h.
+            let near = rounding_allowance(size, n as f64) + 1e-15 * size;
+            for p in &pts {
+                prop_assert!((p.point - c.eval(p.t).unwrap()).norm() <= near);
+            }
+            let poly: Vec<Vector2> = pts.iter().map(|p| p.point).collect();
+            let sampling = HausdorffSampling { curve_samples: 2001, segment_samples: 3 };
+            let h = measured_hausdorff(&c, &poly, sampling).unwrap();
+            prop_assert!(h <= tol * (1.0 + 1e-9), "{h} > {tol}");
+        }
+    }
+
+    /// The forward differences are taken on usual input, on both count paths, and declined
+    /// where the rounding would take more than its share of the tolerance or where the chord
+    /// bound leaves no room for it (q on an exact fourth or square power).
+    #[test]
+    fn forward_differences_are_taken_where_they_fit() {
+        // (q, s, tol): table path, square-root path, both at 1e-3 and s = 4.
+        for (q, size, tol, forward) in [
+            (20.5_f64.powi(4), 4.0, 1e-3, true),
+            (400.5_f64.powi(4), 4.0, 1e-3, true),
+            (3_000.5_f64.powi(4), 4.0, 1e-5, true),
+            // The allowance 2⁻⁵⁰ s (N + 64) above tol / 1024.
+            (20.5_f64.powi(4), 1e12, 1e-3, false),
+            // Just below a fourth power: the chord bound is all but the whole tolerance (on an
+            // exact fourth power the count rounds up, leaving room).
+            (16.0_f64.powi(4) / (1.0 + 1e-12), 4.0, 1e-3, false),
+            (1_024.0_f64.powi(4) / (1.0 + 1e-12), 4.0, 1e-3, false),
+            (16.0_f64.powi(4), 4.0, 1e-3, true),
+            (20.0_f64.powi(4) * (1.0 - 1e-9), 4.0, 1e-3, false),
+            (20.0_f64.powi(4) * (1.0 - 1e-5), 4.0, 1e-3, true),
+            // Up to 32 segments, a tolerance below 2⁻²¹ s: evaluated.
+            (20.5_f64.powi(4), 1e4, 1e-3, false),
+            (400.5_f64.powi(4), 1e4, 1e-3, true),
+        ] {
+            let count = UniformCount::new(q, size, tol).unwrap();
+            assert_eq!(count.forward, forward, "{q} {size} {tol}");
+            assert_eq!(count.step, 1.0 / count.segments as f64);
+        }
+        assert!(UniformCount::new(f64::NAN, 4.0, 1e-3).is_none());
+        assert!(UniformCount::new(MAX_FOURTH_POWER * 1.01, 4.0, 1e-3).is_none());
+        let top = UniformCount::new(MAX_FOURTH_POWER / 1.01, 4.0, 1e-3).unwrap();
+        assert!(top.segments <= MAX_WANG_SEGMENTS);
     }
 
     /// Splitmix64: a seeded stream of u64 for the table tests.
@@ -517,7 +723,10 @@ mod tests {
             assert_eq!(flatten_wang(&curve, tol, |p| general.push(p)), Ok(n));
             for (f, g) in fast.iter().zip(&general) {
                 assert_eq!(f.t, g.t);
-                assert!((f.point - g.point).norm() <= 1e-13, "{f:?} vs {g:?}");
+                // Forward differences against Horner's rule: within the rounding allowance.
+                let size: f64 = points.iter().map(|p| p.x().abs() + p.y().abs()).sum();
+                let allowance = 2.0 * rounding_allowance(size, n as f64);
+                assert!((f.point - g.point).norm() <= allowance, "{f:?} vs {g:?}");
             }
         }
         let q = [
@@ -529,8 +738,8 @@ mod tests {
         let tiny = q.map(|p| p * 1e-50);
         let zero = [Vector2::zeros(); 3];
         for (points, tol) in [
-            (&q[..], 1e-9), // more than 32 segments
-            (&q[..], 0.0),  // invalid tolerances
+            (&q[..], 1e-16), // more than MAX_WANG_SEGMENTS
+            (&q[..], 0.0),   // invalid tolerances
             (&q[..], f64::NAN),
             (&q[..], f64::INFINITY),
             (&q[..], -1.0),

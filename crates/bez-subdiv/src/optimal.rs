@@ -17,6 +17,8 @@ const MAX_CUBIC_CELLS: usize = 200;
 /// Up to this many cells (Wang's count up to about 90), the array is this short: zeroing the
 /// long one took about a seventh of the time of a random cubic at 1e-3 × size.
 const SHORT_CUBIC_CELLS: usize = 32;
+/// And up to this many cells (Wang's count up to about 45), shorter still.
+const SHORTEST_CUBIC_CELLS: usize = 16;
 /// A step whose bound is below this fraction of the tolerance is tried once longer (0.9: the
 /// count on random cubics drops by about 1 %, for about 20 % more time than without).
 const EXTEND_BELOW: f64 = 0.9;
@@ -213,9 +215,9 @@ impl<S: FnMut(FlatPoint)> March<'_, S> {
         }
     }
 
-    /// The shortest step, 2^−`max_depth` (computed only where a step gets that short).
+    /// The shortest step.
     fn min_step(&self) -> f64 {
-        0.5_f64.powi(i32::try_from(self.max_depth).unwrap_or(i32::MAX))
+        min_step(self.max_depth)
     }
 
     /// Sends the chord from `a` to `b` if its bound holds, trying it once longer (up to t = 1)
@@ -282,6 +284,27 @@ impl<S: FnMut(FlatPoint)> March<'_, S> {
             }
         }
     }
+}
+
+/// 2^−`max_depth` (`max_depth` at most [`MAX_FLATTEN_DEPTH`](crate::MAX_FLATTEN_DEPTH), checked
+/// before): the exponent field alone, no call of `powi`.
+fn min_step(max_depth: usize) -> f64 {
+    let depth = u64::try_from(max_depth.min(crate::MAX_FLATTEN_DEPTH)).unwrap_or(0);
+    f64::from_bits((1023 - depth) << 52)
+}
+
+/// ⌈x⌉ for 0 ≤ x ≤ 2²⁰ (Wang's steps and the estimate are checked against it before), by
+/// truncation, exact there, instead of a call of `ceil` (no SSE4.1 at the baseline target).
+#[inline(always)]
+fn ceil_small(x: f64) -> f64 {
+    #[allow(
+        clippy::cast_possible_truncation,
+        clippy::cast_sign_loss,
+        reason = "0 ≤ x ≤ 2^20"
+    )]
+    let whole = x as u32;
+    let whole = f64::from(whole);
+    if whole < x { whole + 1.0 } else { whole }
 }
 
 /// The parameter offset x in a cell of width `w` with densities `r0`, `r1` at its ends
@@ -353,16 +376,16 @@ fn place<S: FnMut(FlatPoint)>(
 ) -> Result<(), SubdivError> {
     let total = masses[masses.len() - 1];
     let scale = 1.0 / (8.0 * march.tolerance).sqrt();
-    let estimate = (total * scale).ceil();
+    let raw = total * scale;
     // Also a NaN or infinite estimate (overflowing densities).
-    if estimate.is_nan() || estimate >= MAX_OPTIMAL_SEGMENTS as f64 {
+    if raw.is_nan() || raw > (MAX_OPTIMAL_SEGMENTS - 1) as f64 {
         return Err(SubdivError::TooManySegments {
             tolerance: march.tolerance,
             limit: MAX_OPTIMAL_SEGMENTS,
         });
     }
     // 1 ≤ estimate < 2²⁰.
-    let step = total / estimate.max(1.0);
+    let step = total / ceil_small(raw).max(1.0);
     let end = total * (1.0 - 1e-9);
     let last = march.last;
     let mut cumulative = Cumulative {
@@ -454,9 +477,8 @@ fn optimal_bezier(
     let (mut first, mut last) = (power.jet(0.0), power.jet(1.0));
     first.point = start;
     last.point = end;
-    let cells = (work.wang_steps * NODES_PER_WANG_STEP)
-        .ceil()
-        .clamp(1.0, MAX_CUBIC_CELLS as f64) as usize;
+    let cells = ceil_small(work.wang_steps * NODES_PER_WANG_STEP).clamp(1.0, MAX_CUBIC_CELLS as f64)
+        as usize;
     let march = March {
         power: &power,
         sink,
@@ -470,7 +492,9 @@ fn optimal_bezier(
     };
     // The nodes live in arrays of the call's stack frame; short ones when they suffice, since
     // the whole arrays are zeroed on every call.
-    if cells <= SHORT_CUBIC_CELLS {
+    if cells <= SHORTEST_CUBIC_CELLS {
+        march_power::<{ SHORTEST_CUBIC_CELLS + 1 }, _>(march, cells, first)
+    } else if cells <= SHORT_CUBIC_CELLS {
         march_power::<{ SHORT_CUBIC_CELLS + 1 }, _>(march, cells, first)
     } else {
         march_power::<{ MAX_CUBIC_CELLS + 1 }, _>(march, cells, first)
@@ -565,6 +589,27 @@ mod tests {
         let bound = chord_bound(&power.jet(a), &power.jet(b), 0.0, power.c * 6.0, 0.0);
         let exact = chord_deviation(&cubics[0], a, b).unwrap();
         assert!(bound <= exact * 1.01, "{bound} vs {exact}");
+    }
+
+    /// The power of two and the ceiling without `powi` and `ceil`, against them.
+    #[test]
+    fn min_step_and_ceil_small_match_powi_and_ceil() {
+        for depth in 0..=crate::MAX_FLATTEN_DEPTH {
+            assert_eq!(min_step(depth), 0.5_f64.powi(depth as i32), "{depth}");
+        }
+        for x in [
+            0.0,
+            0.3,
+            1.0,
+            1.0 + 1e-15,
+            2.5,
+            7.0,
+            1e3 - 1e-12,
+            1_048_575.5,
+            1_048_576.0,
+        ] {
+            assert_eq!(ceil_small(x), x.ceil(), "{x}");
+        }
     }
 
     /// `cubic_offset` against a dense sampling of |σ(1 − σ)(A + Cσ)|.

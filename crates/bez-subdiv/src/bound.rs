@@ -14,13 +14,16 @@ pub fn max_second_difference(curve: &BezierCurve<2>) -> f64 {
     second_difference_max(curve.points())
 }
 
-/// maxᵢ |Pᵢ − 2Pᵢ₊₁ + Pᵢ₊₂| of a control polygon (0 below three points).
+/// maxᵢ |Pᵢ − 2Pᵢ₊₁ + Pᵢ₊₂| of a control polygon (0 below three points): one square root of
+/// the largest square (the same number as the largest norm: the square root is monotone and
+/// correctly rounded).
 #[inline]
 fn second_difference_max(points: &[Vector2]) -> f64 {
     points
         .windows(3)
-        .map(|w| (w[0] - w[1] * 2.0 + w[2]).norm())
+        .map(|w| (w[0] - w[1] * 2.0 + w[2]).norm_squared())
         .fold(0.0, f64::max)
+        .sqrt()
 }
 
 /// A depth r that uniform halving never needs to exceed for eq. (3) with tolerance ε:

@@ -26,15 +26,24 @@ pub(crate) fn rounding_floor(curve: &BezierCurve<2>) -> f64 {
     16.0 * f64::EPSILON * curve.points().iter().map(Vector2::amax).fold(0.0, f64::max)
 }
 
+/// What [`check_work`] computed on its way, for the caller to reuse.
+pub(crate) struct Work {
+    /// [`rounding_floor`] of the curve.
+    pub(crate) floor: f64,
+    /// Wang's count before rounding up ([`wang_steps`]).
+    pub(crate) wang_steps: f64,
+}
+
 /// [`SubdivError::DepthTooLarge`] above [`MAX_FLATTEN_DEPTH`];
 /// [`SubdivError::ToleranceBelowRounding`] for an absolute tolerance below
 /// [`rounding_floor`] (a curve collapsed to the origin has floor 0 and passes);
 /// [`SubdivError::TooManySegments`] when Wang's count is above [`MAX_SUBDIVISION_STEPS`].
+#[inline]
 pub(crate) fn check_work(
     curve: &BezierCurve<2>,
     tolerance: f64,
     max_depth: usize,
-) -> Result<(), SubdivError> {
+) -> Result<Work, SubdivError> {
     if max_depth > MAX_FLATTEN_DEPTH {
         return Err(SubdivError::DepthTooLarge {
             value: max_depth,
@@ -52,5 +61,8 @@ pub(crate) fn check_work(
             limit: MAX_SUBDIVISION_STEPS as usize,
         });
     }
-    Ok(())
+    Ok(Work {
+        floor: min,
+        wang_steps: steps,
+    })
 }

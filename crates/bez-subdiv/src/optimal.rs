@@ -1,9 +1,9 @@
 //! Beyond the paper: near-optimal guaranteed flattening, placed by the curvature density
-//! √(|κ| / (8 tol)) and verified segment by segment with closed-form bounds.
+//! √(|κ| / (8 tol)) and verified segment by segment with closed-form bounds (degree ≤ 3; above,
+//! the march on cubic models of [`model_march`](crate::model_march)).
 
 use bez_core::{BezierCurve, BezierForm, Vector2};
 
-use crate::bound::wang_steps;
 use crate::error::SubdivError;
 use crate::guaranteed::FlatPoint;
 
@@ -17,6 +17,8 @@ const MAX_CUBIC_CELLS: usize = 200;
 /// Up to this many cells (Wang's count up to about 90), the array is this short: zeroing the
 /// long one took about a seventh of the time of a random cubic at 1e-3 × size.
 const SHORT_CUBIC_CELLS: usize = 32;
+/// And up to this many cells (Wang's count up to about 45), shorter still.
+const SHORTEST_CUBIC_CELLS: usize = 16;
 /// A step whose bound is below this fraction of the tolerance is tried once longer (0.9: the
 /// count on random cubics drops by about 1 %, for about 20 % more time than without).
 const EXTEND_BELOW: f64 = 0.9;
@@ -30,15 +32,6 @@ struct Jet {
     point: Vector2,
     d1: Vector2,
     d2: Vector2,
-}
-
-/// Evaluation of jets anywhere on the curve.
-trait Evaluate {
-    fn jet(&self, t: f64) -> Jet;
-    /// The density at t (see [`density`]).
-    fn density(&self, t: f64) -> f64 {
-        density(&self.jet(t))
-    }
 }
 
 /// A curve of degree ≤ 3 in power form relative to P₀: B(t) = P₀ + t (a + t (b + t c)).
@@ -66,9 +59,7 @@ impl Power {
         };
         Some(Self { p0, a, b, c })
     }
-}
 
-impl Evaluate for Power {
     #[inline(always)]
     fn jet(&self, t: f64) -> Jet {
         let Self { p0, a, b, c } = *self;
@@ -80,6 +71,8 @@ impl Evaluate for Power {
         }
     }
 
+    /// The density √(|B′ × B″| / |B′|) = √|κ| |B′| at t (0 where B′ vanishes), segments per
+    /// unit of t once divided by √(8 tol).
     #[inline(always)]
     fn density(&self, t: f64) -> f64 {
         let Self { a, b, c, .. } = *self;
@@ -94,54 +87,26 @@ impl Evaluate for Power {
     }
 }
 
-/// Bounds on |B‴| and |B⁗| (in the curve's parameter) over [0, `end`] from the previous
-/// piece's end.
-#[derive(Debug, Clone, Copy)]
-struct PieceBound {
-    end: f64,
-    third: f64,
-    fourth: f64,
-}
-
-/// The density √(|B′ × B″| / |B′|) = √|κ| |B′| (0 where B′ vanishes), segments per unit of t
-/// once divided by √(8 tol).
-#[inline(always)]
-fn density(jet: &Jet) -> f64 {
-    let speed = jet.d1.norm();
-    if speed > 0.0 {
-        (jet.d1.perp(&jet.d2).abs() / speed).sqrt()
-    } else {
-        0.0
-    }
-}
-
-/// An upper bound on the Hausdorff distance between the arc B([a, b]) and its chord, from the
-/// jets at both ends and bounds `third` ≥ |B‴|, `fourth` ≥ |B⁗| on [a, b]; h = b − a.
+/// An upper bound on the Hausdorff distance between the arc B([a, b]) of a curve of degree
+/// ≤ 3 and its chord, from the jets at both ends, a bound `third` ≥ |B‴| and B‴ = `jerk`
+/// itself (constant); h = b − a.
 ///
 /// With u the unit chord direction, the offset f(t) = u × (B(t) − B(a)) vanishes at a and b
-/// and f″ = u × B″. Write f″ = ℓ + r with ℓ linear from α = u × B″(a) to γ = u × B″(b); then
-/// |r| ≤ h²/8 · |B⁗| and f = f_ℓ + f_r, both zero at the ends, where
-/// f_ℓ(a + hσ) = h²/6 · σ(σ − 1)(α(2 − σ) + γ(1 + σ)), so |f_ℓ| ≤ h²/24 · max(|2α + γ|, |α + 2γ|)
-/// (exact when α = γ: the parabola's h²|f″|/8) and |f_r| ≤ h²/8 · max|r|. When the projection
-/// q(t) = u · B′(t) stays ≥ 0 (it does when min(q(a), q(b)) ≥ h²/8 · |B‴|), the arc projects
-/// monotonically onto the chord, so the offset bound is the distance both ways. Otherwise (near
-/// a cusp or a fold), |B(t) − L(t)| ≤ h²/8 · max|B″| for the chord point L(t) at the same
-/// parameter, with |B″| ≤ max(|B″(a)|, |B″(b)|) + h²/8 · |B⁗| on [a, b]; up to degree 3
-/// (`jerk` = B‴) the smaller √(offset² + overshoot²) also bounds it, with the projection's
-/// exact overshoot beyond the chord's ends ([`overshoot`]): the curve's points are that far
-/// from the chord, and the projection still covers the chord.
+/// and f″ = u × B″ is linear, from α = u × B″(a) to γ = u × B″(b):
+/// f(a + hσ) = h²/6 · σ(σ − 1)(α(2 − σ) + γ(1 + σ)), so |f| ≤ h²/24 · max(|2α + γ|, |α + 2γ|)
+/// (exact when α = γ: the parabola's h²|f″|/8), and exactly h²/6 · max |σ(1 − σ)(A + Cσ)|,
+/// A = 2α + γ, C = γ − α ([`cubic_offset`]). When the projection q(t) = u · B′(t) stays ≥ 0
+/// (it does when min(q(a), q(b)) ≥ h²/8 · |B‴|), the arc projects monotonically onto the
+/// chord, so the offset bound is the distance both ways. Otherwise (near a cusp or a fold),
+/// |B(t) − L(t)| ≤ h²/8 · max|B″| for the chord point L(t) at the same parameter, with
+/// |B″| ≤ max(|B″(a)|, |B″(b)|) on [a, b] (B″ is linear); the smaller √(offset² + overshoot²)
+/// also bounds it, with the projection's exact overshoot beyond the chord's ends
+/// ([`overshoot`]): the curve's points are that far from the chord, and the projection still
+/// covers the chord.
 #[inline(always)]
-fn chord_bound(
-    a: &Jet,
-    b: &Jet,
-    third: f64,
-    fourth: f64,
-    jerk: Option<Vector2>,
-    accept: f64,
-) -> f64 {
+fn chord_bound(a: &Jet, b: &Jet, third: f64, jerk: Vector2, accept: f64) -> f64 {
     let h = b.t - a.t;
     let k = h * h / 8.0;
-    let remainder = k * k * fourth;
     let d = b.point - a.point;
     let len = d.norm();
     // In units of the chord length: α |d| = d × B″(a), γ |d| = d × B″(b); no division.
@@ -150,23 +115,22 @@ fn chord_bound(
         let (big, small) = (2.0 * alpha + gamma, alpha + 2.0 * gamma);
         // |ψ| ≤ max(|A|, |A + C|) / 4 first; the exact maximum only when that fails.
         let cheap = h * h / 24.0 * big.abs().max(small.abs());
-        if cheap + remainder * len <= accept * len {
-            return cheap / len + remainder;
+        if cheap <= accept * len {
+            return cheap / len;
         }
-        let offset = h * h / 6.0 * cubic_offset(big, gamma - alpha) / len + remainder;
+        let offset = h * h / 6.0 * cubic_offset(big, gamma - alpha) / len;
         if offset <= accept {
             return offset;
         }
-        return offset.min(k * a.d2.norm().max(b.d2.norm()) + remainder);
+        return offset.min(k * a.d2.norm().max(b.d2.norm()));
     }
-    let fallback = k * a.d2.norm().max(b.d2.norm()) + remainder;
-    match jerk {
-        Some(jerk) if len > 0.0 => {
-            let (alpha, gamma) = (d.perp(&a.d2), d.perp(&b.d2));
-            let offset = h * h / 6.0 * cubic_offset(2.0 * alpha + gamma, gamma - alpha) / len;
-            offset.hypot(overshoot(a, &d, len, h, jerk)).min(fallback)
-        }
-        _ => fallback,
+    let fallback = k * a.d2.norm().max(b.d2.norm());
+    if len > 0.0 {
+        let (alpha, gamma) = (d.perp(&a.d2), d.perp(&b.d2));
+        let offset = h * h / 6.0 * cubic_offset(2.0 * alpha + gamma, gamma - alpha) / len;
+        offset.hypot(overshoot(a, &d, len, h, jerk)).min(fallback)
+    } else {
+        fallback
     }
 }
 
@@ -225,72 +189,62 @@ fn cubic_offset(a: f64, c: f64) -> f64 {
 }
 
 /// Where the march stands: the limits, the sink and the count.
-struct March<'a, E, S> {
-    eval: &'a E,
+struct March<'a, S> {
+    power: &'a Power,
     sink: S,
     /// Accepted bound: the tolerance less a rounding allowance.
     accept: f64,
-    min_step: f64,
     max_depth: usize,
     tolerance: f64,
     segments: usize,
     /// The jet at t = 1 with the exact end point.
     last: Jet,
-    /// B‴ up to degree 3 (constant), `None` above.
-    jerk: Option<Vector2>,
+    /// B‴ (constant) and its norm.
+    jerk: Vector2,
+    third: f64,
 }
 
-impl<E: Evaluate, S: FnMut(FlatPoint)> March<'_, E, S> {
+impl<S: FnMut(FlatPoint)> March<'_, S> {
     /// The jet at t, the exact end point from t = 1 on.
+    #[inline(always)]
     fn jet(&self, t: f64) -> Jet {
         if t >= 1.0 {
             self.last
         } else {
-            self.eval.jet(t)
+            self.power.jet(t)
         }
     }
 
-    /// Sends the chord from `a` to `b` if its bound holds, trying it once longer (up to
-    /// `reach`, where the bounds `third` and `fourth` end) when the bound is well inside the
-    /// tolerance; otherwise shortens it (the bound grows like h², so by about √(accept /
-    /// bound), at least 1 % and at most 70 %) until it holds. Returns the end point reached.
-    fn segment(&mut self, a: &Jet, b: Jet, bounds: (f64, f64, f64)) -> Result<Jet, SubdivError> {
-        let (third, fourth, reach) = bounds;
+    /// The shortest step.
+    fn min_step(&self) -> f64 {
+        min_step(self.max_depth)
+    }
+
+    /// Sends the chord from `a` to `b` if its bound holds, trying it once longer (up to t = 1)
+    /// when the bound is well inside the tolerance; otherwise shortens it (the bound grows
+    /// like h², so by about √(accept / bound), at least 1 % and at most 70 %) until it holds.
+    /// Returns the end point reached.
+    #[inline(always)]
+    fn segment(&mut self, a: &Jet, b: Jet) -> Result<Jet, SubdivError> {
+        let (third, jerk, accept) = (self.third, self.jerk, self.accept);
         let mut to = b;
-        let mut first = true;
-        loop {
-            let e = chord_bound(a, &to, third, fourth, self.jerk, self.accept);
-            if e <= self.accept {
-                // A bound well inside the tolerance (the density underestimated the step):
-                // one longer try, kept if it passes.
-                if first && to.t < 1.0 && e < EXTEND_BELOW * self.accept {
-                    let grow = if e > 0.0 {
-                        (0.995 * (self.accept / e).sqrt()).min(MAX_GROWTH)
-                    } else {
-                        MAX_GROWTH
-                    };
-                    let longer = self.jet((a.t + (to.t - a.t) * grow).min(reach));
-                    if chord_bound(a, &longer, third, fourth, self.jerk, self.accept) <= self.accept
-                    {
-                        to = longer;
-                    }
+        let e = chord_bound(a, &to, third, jerk, accept);
+        if e <= accept {
+            // A bound well inside the tolerance (the density underestimated the step): one
+            // longer try, kept if it passes.
+            if to.t < 1.0 && e < EXTEND_BELOW * accept {
+                let grow = if e > 0.0 {
+                    (0.995 * (accept / e).sqrt()).min(MAX_GROWTH)
+                } else {
+                    MAX_GROWTH
+                };
+                let longer = self.jet((a.t + (to.t - a.t) * grow).min(1.0));
+                if chord_bound(a, &longer, third, jerk, accept) <= accept {
+                    to = longer;
                 }
-                break;
             }
-            first = false;
-            let h = to.t - a.t;
-            // Also for a NaN bound (overflowing jets): the depth limit ends the shortening.
-            let shrink = if e.is_finite() {
-                (0.995 * (self.accept / e).sqrt()).clamp(0.3, 0.99)
-            } else {
-                0.5
-            };
-            if h * shrink < self.min_step {
-                return Err(SubdivError::DepthLimit {
-                    limit: self.max_depth,
-                });
-            }
-            to = self.jet(a.t + h * shrink);
+        } else {
+            to = self.shorten(a, to, e)?;
         }
         self.segments += 1;
         if self.segments > MAX_OPTIMAL_SEGMENTS {
@@ -305,14 +259,61 @@ impl<E: Evaluate, S: FnMut(FlatPoint)> March<'_, E, S> {
         });
         Ok(to)
     }
+
+    /// Shortens the chord from `a` to `to`, whose bound `e` fails, until its bound holds.
+    #[inline(never)]
+    fn shorten(&self, a: &Jet, mut to: Jet, mut e: f64) -> Result<Jet, SubdivError> {
+        let min_step = self.min_step();
+        loop {
+            let h = to.t - a.t;
+            // Also for a NaN bound (overflowing jets): the depth limit ends the shortening.
+            let shrink = if e.is_finite() {
+                (0.995 * (self.accept / e).sqrt()).clamp(0.3, 0.99)
+            } else {
+                0.5
+            };
+            if h * shrink < min_step {
+                return Err(SubdivError::DepthLimit {
+                    limit: self.max_depth,
+                });
+            }
+            to = self.jet(a.t + h * shrink);
+            e = chord_bound(a, &to, self.third, self.jerk, self.accept);
+            if e <= self.accept {
+                return Ok(to);
+            }
+        }
+    }
+}
+
+/// 2^−`max_depth` (`max_depth` at most [`MAX_FLATTEN_DEPTH`](crate::MAX_FLATTEN_DEPTH), checked
+/// before): the exponent field alone, no call of `powi`.
+fn min_step(max_depth: usize) -> f64 {
+    let depth = u64::try_from(max_depth.min(crate::MAX_FLATTEN_DEPTH)).unwrap_or(0);
+    f64::from_bits((1023 - depth) << 52)
+}
+
+/// ⌈x⌉ for 0 ≤ x ≤ 2²⁰ (Wang's steps and the estimate are checked against it before), by
+/// truncation, exact there, instead of a call of `ceil` (no SSE4.1 at the baseline target).
+#[inline(always)]
+fn ceil_small(x: f64) -> f64 {
+    #[allow(
+        clippy::cast_possible_truncation,
+        clippy::cast_sign_loss,
+        reason = "0 ≤ x ≤ 2^20"
+    )]
+    let whole = x as u32;
+    let whole = f64::from(whole);
+    if whole < x { whole + 1.0 } else { whole }
 }
 
 /// The parameter offset x in a cell of width `w` with densities `r0`, `r1` at its ends
 /// (linear between) where the density's integral from the cell's start reaches `mass`:
-/// r0 x + (r1 − r0) x² / (2w) = mass.
+/// r0 x + (r1 − r0) x² / (2w) = mass. `per_w` is 1 / w up to rounding (the cells are equal: a
+/// product instead of a division on the way from the target to the point).
 #[inline(always)]
-fn invert_cell(r0: f64, r1: f64, w: f64, mass: f64) -> f64 {
-    let s = (r1 - r0) / w;
+fn invert_cell(r0: f64, r1: f64, w: f64, per_w: f64, mass: f64) -> f64 {
+    let s = (r1 - r0) * per_w;
     // The density reached at x is √(r0² + 2 s mass) ≥ 0; the stable root of the quadratic.
     let denominator = r0 + (r0 * r0 + 2.0 * s * mass).max(0.0).sqrt();
     if denominator > 0.0 {
@@ -322,115 +323,95 @@ fn invert_cell(r0: f64, r1: f64, w: f64, mass: f64) -> f64 {
     }
 }
 
-/// The integral of the density (linear between `nodes`, pairs (t, density)) and its inverse,
-/// by a cursor over the cells.
+/// The integral of the density (linear between `nodes`, pairs (t, density), whose integrals
+/// from t = 0 are `masses`) and its inverse, by a cursor over the cells.
 struct Cumulative<'a> {
     nodes: &'a [(f64, f64)],
+    masses: &'a [f64],
+    /// The number of cells, 1 / their width.
+    per_cell: f64,
     /// The current cell, `nodes[cell - 1]` to `nodes[cell]`.
     cell: usize,
-    /// The integral up to `nodes[cell - 1]`.
-    before: f64,
 }
 
 impl Cumulative<'_> {
-    fn mass(&self, cell: usize) -> f64 {
-        let ((t0, r0), (t1, r1)) = (self.nodes[cell - 1], self.nodes[cell]);
-        0.5 * (r0 + r1) * (t1 - t0)
-    }
-
     /// The integral up to `t`.
     fn at(&mut self, t: f64) -> f64 {
         while self.cell > 1 && self.nodes[self.cell - 1].0 > t {
             self.cell -= 1;
-            self.before -= self.mass(self.cell);
         }
         while self.cell + 1 < self.nodes.len() && self.nodes[self.cell].0 < t {
-            self.before += self.mass(self.cell);
             self.cell += 1;
         }
         let ((t0, r0), (t1, r1)) = (self.nodes[self.cell - 1], self.nodes[self.cell]);
         let x = (t - t0).clamp(0.0, t1 - t0);
         let w = t1 - t0;
         let slope = if w > 0.0 { (r1 - r0) / w } else { 0.0 };
-        self.before + r0 * x + 0.5 * slope * x * x
+        self.masses[self.cell - 1] + r0 * x + 0.5 * slope * x * x
     }
 
     /// The parameter where the integral reaches `target`.
+    #[inline(always)]
     fn inverse(&mut self, target: f64) -> f64 {
-        while self.cell > 1 && self.before > target {
+        while self.cell > 1 && self.masses[self.cell - 1] > target {
             self.cell -= 1;
-            self.before -= self.mass(self.cell);
         }
-        while self.cell + 1 < self.nodes.len() && self.before + self.mass(self.cell) < target {
-            self.before += self.mass(self.cell);
+        while self.cell + 1 < self.masses.len() && self.masses[self.cell] < target {
             self.cell += 1;
         }
         let ((t0, r0), (t1, r1)) = (self.nodes[self.cell - 1], self.nodes[self.cell]);
-        (t0 + invert_cell(r0, r1, t1 - t0, (target - self.before).max(0.0))).min(1.0)
+        let before = self.masses[self.cell - 1];
+        (t0 + invert_cell(r0, r1, t1 - t0, self.per_cell, (target - before).max(0.0))).min(1.0)
     }
 }
 
-/// Places the points of the density march on `nodes` (t, density; t from 0 to 1, at least two)
-/// and sends them through `march`; `pieces` bound B‴ and B⁗ on consecutive parameter ranges.
+/// Places the points of the density march on `nodes` (t, density; t from 0 to 1, at least
+/// two; `masses` their integrals from 0) and sends them through `march`.
 ///
 /// Steps of equal mass, the integral's total over ⌈total / √(8 tol)⌉ (each at most one
 /// segment of the model); a step the bound shortens or lengthens moves the mass reached to its
 /// end, so later steps keep their length.
-fn place<E: Evaluate, S: FnMut(FlatPoint)>(
-    march: &mut March<'_, E, S>,
+fn place<S: FnMut(FlatPoint)>(
+    march: &mut March<'_, S>,
     nodes: &[(f64, f64)],
-    pieces: &[PieceBound],
+    masses: &[f64],
     first: Jet,
-    last: Jet,
 ) -> Result<(), SubdivError> {
-    let total: f64 = nodes
-        .windows(2)
-        .map(|w| 0.5 * (w[0].1 + w[1].1) * (w[1].0 - w[0].0))
-        .sum();
+    let total = masses[masses.len() - 1];
     let scale = 1.0 / (8.0 * march.tolerance).sqrt();
-    let estimate = (total * scale).ceil();
+    let raw = total * scale;
     // Also a NaN or infinite estimate (overflowing densities).
-    if estimate.is_nan() || estimate >= MAX_OPTIMAL_SEGMENTS as f64 {
+    if raw.is_nan() || raw > (MAX_OPTIMAL_SEGMENTS - 1) as f64 {
         return Err(SubdivError::TooManySegments {
             tolerance: march.tolerance,
             limit: MAX_OPTIMAL_SEGMENTS,
         });
     }
     // 1 ≤ estimate < 2²⁰.
-    let step = total / estimate.max(1.0);
+    let step = total / ceil_small(raw).max(1.0);
+    let end = total * (1.0 - 1e-9);
+    let last = march.last;
     let mut cumulative = Cumulative {
         nodes,
+        masses,
+        per_cell: (nodes.len() - 1) as f64,
         cell: 1,
-        before: 0.0,
     };
-    let (mut a, mut reached, mut piece) = (first, 0.0, 0);
+    let (mut a, mut reached) = (first, 0.0);
     while a.t < 1.0 {
         let target = reached + step;
-        let b = if target >= total * (1.0 - 1e-9) {
+        let b = if target >= end {
             last
         } else {
             let t = cumulative.inverse(target);
             // A density too small to move on (rounding): a short plain step.
             march.jet(if t <= a.t {
-                a.t + march.min_step.max(1e-3)
+                a.t + march.min_step().max(1e-3)
             } else {
                 t
             })
         };
-        // The pieces that [a, b] meets.
-        while piece + 1 < pieces.len() && pieces[piece].end <= a.t {
-            piece += 1;
-        }
-        let (mut third, mut fourth, mut reach) = (0.0_f64, 0.0_f64, 1.0_f64);
-        for p in &pieces[piece..] {
-            third = third.max(p.third);
-            fourth = fourth.max(p.fourth);
-            reach = p.end;
-            if p.end >= b.t {
-                break;
-            }
-        }
-        let reached_b = march.segment(&a, b, (third, fourth, reach.max(b.t)))?;
+        let reached_b = march.segment(&a, b)?;
         reached = if reached_b.t == b.t {
             target
         } else {
@@ -445,16 +426,15 @@ fn place<E: Evaluate, S: FnMut(FlatPoint)>(
 /// `tolerance` (absolute) of the curve in Hausdorff distance, with close to the fewest
 /// segments, and returns k.
 ///
-/// Placement: the density √(|κ| / (8 tol)) |B′(t)| of the lower bound N*
+/// Up to degree 3: the density √(|κ| / (8 tol)) |B′(t)| of the lower bound N*
 /// ([`optimal_segment_count`](crate::optimal_segment_count)) is sampled at a few nodes (about
-/// a third of Wang's count, at most 48 up to degree 3) and integrated by the trapezoidal rule;
-/// the march takes steps of equal integral, ⌈integral⌉ of them (the density linear in each
-/// cell, inverted in closed form). Verification: each chord is checked by the bound of
-/// `chord_bound` (a closed form in B′ and B″ at the chord's ends plus bounds on B‴ and B⁗); a
-/// chord whose bound exceeds the tolerance is shortened until it holds, one whose bound is
-/// below 0.9 tol is tried once longer. Up to degree 3, B‴ is constant and B⁗ = 0, so nothing is
-/// subdivided: O(1) per point, no allocation. Above, the curve is covered piece by piece by
-/// cubic models with rigorous remainders and each chord is verified exactly on the models
+/// a third of Wang's count, at most 200) and integrated by the trapezoidal rule; the march
+/// takes steps of equal integral, ⌈integral⌉ of them (the density linear in each cell,
+/// inverted in closed form). Each chord is checked by the closed-form bound of `chord_bound`
+/// (B′ and B″ at the chord's ends and the constant B‴); a chord whose bound exceeds the
+/// tolerance is shortened until it holds, one whose bound is below 0.9 tol is tried once
+/// longer: O(1) per point, no allocation. Above, the curve is covered piece by piece by cubic
+/// models with rigorous remainders and each chord is verified exactly on the models
 /// ([`model_march`](crate::model_march)); the points sent there are the models' points, within
 /// their remainder (≤ tol / 32) of B(t), the end points exact: O(1) per point, O(n) per model
 /// (B and B′ at its end), O(n²) per block of about 16 models, no allocation up to degree
@@ -488,70 +468,65 @@ fn optimal_bezier(
     if p.len() < 2 {
         return Err(SubdivError::TooFewPoints { got: p.len() });
     }
-    crate::limits::check_work(curve, tolerance, max_depth)?;
-    // Rounding of the evaluated points and of the bound: a few ulps of the coordinates, at
-    // most a quarter of the tolerance (which is ≥ 16 ulps).
-    let allowance = 4.0 * f64::EPSILON * p.iter().map(Vector2::amax).fold(0.0, f64::max);
-    let min_step = 0.5_f64.powi(i32::try_from(max_depth).unwrap_or(i32::MAX));
+    let work = crate::limits::check_work(curve, tolerance, max_depth)?;
+    // Rounding of the evaluated points and of the bound: a few ulps of the coordinates
+    // (4 ulps, a quarter of the rounding floor), at most a quarter of the tolerance.
+    let accept = tolerance - work.floor / 4.0;
     let (start, end) = (p[0], p[p.len() - 1]);
-    let ends = |eval: &dyn Fn(f64) -> Jet| {
-        let (mut first, mut last) = (eval(0.0), eval(1.0));
-        first.point = start;
-        last.point = end;
-        (first, last)
-    };
     sink(FlatPoint {
         t: 0.0,
         point: start,
     });
-    if let Some(power) = Power::new(p) {
-        let (first, last) = ends(&|t| power.jet(t));
-        let wang = wang_steps(p, tolerance);
-        let cells = (wang * NODES_PER_WANG_STEP)
-            .ceil()
-            .clamp(1.0, MAX_CUBIC_CELLS as f64) as usize;
-        let march = March {
-            eval: &power,
-            sink,
-            accept: tolerance - allowance,
-            min_step,
-            max_depth,
-            tolerance,
-            segments: 0,
-            last,
-            jerk: Some(power.c * 6.0),
-        };
-        // The nodes live in an array of the call's stack frame; a short one when it suffices,
-        // since the whole array is zeroed on every call.
-        return if cells <= SHORT_CUBIC_CELLS {
-            march_power::<{ SHORT_CUBIC_CELLS + 1 }, _>(march, cells, first)
-        } else {
-            march_power::<{ MAX_CUBIC_CELLS + 1 }, _>(march, cells, first)
-        };
+    let Some(power) = Power::new(p) else {
+        return crate::model_march::march_models(p, accept, max_depth, sink);
+    };
+    let (mut first, mut last) = (power.jet(0.0), power.jet(1.0));
+    first.point = start;
+    last.point = end;
+    let cells = ceil_small(work.wang_steps * NODES_PER_WANG_STEP).clamp(1.0, MAX_CUBIC_CELLS as f64)
+        as usize;
+    let march = March {
+        power: &power,
+        sink,
+        accept,
+        max_depth,
+        tolerance,
+        segments: 0,
+        last,
+        jerk: power.c * 6.0,
+        third: 6.0 * power.c.norm(),
+    };
+    // The nodes live in arrays of the call's stack frame; short ones when they suffice, since
+    // the whole arrays are zeroed on every call.
+    if cells <= SHORTEST_CUBIC_CELLS {
+        march_power::<{ SHORTEST_CUBIC_CELLS + 1 }, _>(march, cells, first)
+    } else if cells <= SHORT_CUBIC_CELLS {
+        march_power::<{ SHORT_CUBIC_CELLS + 1 }, _>(march, cells, first)
+    } else {
+        march_power::<{ MAX_CUBIC_CELLS + 1 }, _>(march, cells, first)
     }
-    crate::model_march::march_models(p, tolerance - allowance, max_depth, sink)
 }
 
 /// The march of a curve of degree ≤ 3 over `cells` equal density cells (N > `cells`, the
-/// nodes held in an array of N entries); returns the number of segments.
+/// nodes held in arrays of N entries); returns the number of segments.
 fn march_power<const N: usize, S: FnMut(FlatPoint)>(
-    mut march: March<'_, Power, S>,
+    mut march: March<'_, S>,
     cells: usize,
     first: Jet,
 ) -> Result<usize, SubdivError> {
-    let power = march.eval;
+    let power = march.power;
     let mut nodes = [(0.0, 0.0); N];
-    for (j, node) in nodes.iter_mut().enumerate().take(cells + 1) {
+    let mut masses = [0.0; N];
+    let mut previous = (0.0, power.density(0.0));
+    nodes[0] = previous;
+    for j in 1..=cells {
         let t = j as f64 / cells as f64;
-        *node = (t, power.density(t));
+        let node = (t, power.density(t));
+        nodes[j] = node;
+        masses[j] = masses[j - 1] + 0.5 * (previous.1 + node.1) * (t - previous.0);
+        previous = node;
     }
-    let bound = [PieceBound {
-        end: 1.0,
-        third: 6.0 * power.c.norm(),
-        fourth: 0.0,
-    }];
-    let last = march.last;
-    place(&mut march, &nodes[..=cells], &bound, first, last)?;
+    place(&mut march, &nodes[..=cells], &masses[..=cells], first)?;
     Ok(march.segments)
 }
 
@@ -606,14 +581,8 @@ mod tests {
                 let a = f64::from(k) / 40.0;
                 for h in [0.01, 0.05, 0.2] {
                     let b = (a + h).min(1.0);
-                    let bound = chord_bound(
-                        &power.jet(a),
-                        &power.jet(b),
-                        third,
-                        0.0,
-                        Some(power.c * 6.0),
-                        0.0,
-                    );
+                    let bound =
+                        chord_bound(&power.jet(a), &power.jet(b), third, power.c * 6.0, 0.0);
                     let exact = chord_deviation(c, a, b).unwrap();
                     assert!(
                         bound >= exact * (1.0 - 1e-9) - 1e-15,
@@ -625,9 +594,30 @@ mod tests {
         // A smooth arc: the offset bound is exact up to rounding.
         let power = Power::new(cubics[0].points()).unwrap();
         let (a, b) = (0.3, 0.4);
-        let bound = chord_bound(&power.jet(a), &power.jet(b), 0.0, 0.0, None, 0.0);
+        let bound = chord_bound(&power.jet(a), &power.jet(b), 0.0, power.c * 6.0, 0.0);
         let exact = chord_deviation(&cubics[0], a, b).unwrap();
         assert!(bound <= exact * 1.01, "{bound} vs {exact}");
+    }
+
+    /// The power of two and the ceiling without `powi` and `ceil`, against them.
+    #[test]
+    fn min_step_and_ceil_small_match_powi_and_ceil() {
+        for depth in 0..=crate::MAX_FLATTEN_DEPTH {
+            assert_eq!(min_step(depth), 0.5_f64.powi(depth as i32), "{depth}");
+        }
+        for x in [
+            0.0,
+            0.3,
+            1.0,
+            1.0 + 1e-15,
+            2.5,
+            7.0,
+            1e3 - 1e-12,
+            1_048_575.5,
+            1_048_576.0,
+        ] {
+            assert_eq!(ceil_small(x), x.ceil(), "{x}");
+        }
     }
 
     /// `cubic_offset` against a dense sampling of |σ(1 − σ)(A + Cσ)|.

@@ -531,9 +531,10 @@ impl TypicalSpatial {
     /// Guarantees: every returned curve meets the end conditions to the direction residual
     /// 1e-12 and is Class A (Farin's condition (3) for M, or for M⁻¹ when s < 1). Not
     /// guaranteed: that every solution is found. On 6,000 seeded random typical curves of degree
-    /// 3..20 (about 70 % turning by more than π) every Class A generator was recovered; 0.15 %
-    /// of the others were missed (a zero curve of the two components folding back inside a grid
-    /// cell). So [`ClassAError::NoClassASolution`] means no *found* solution is Class A.
+    /// 3..20 (about 70 % turning by more than π) 0–0.1 % of the Class A generators and 0.15–0.2 %
+    /// of the others were missed, depending on the seeds (a zero curve of the two components
+    /// folding back inside a grid cell). So [`ClassAError::NoClassASolution`] means no *found*
+    /// solution is Class A.
     ///
     /// # Errors
     /// [`ClassAError::DegreeTooLow`], [`ClassAError::NonFinite`], [`ClassAError::CoincidentPoints`],

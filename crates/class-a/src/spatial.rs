@@ -127,26 +127,56 @@ struct RowBase {
     turn: Complex<f64>,
 }
 
-/// One grid column log s of the Newton-start grid, with the quantities every row shares:
-/// r = e^{−|log s|}, rⁿ and Σ_{j<n} rʲ.
-#[derive(Debug, Clone, Copy, Default)]
-struct Column {
-    log_s: f64,
-    r: f64,
-    r_n: f64,
-    real: f64,
+/// The columns log s of the Newton-start grid, one entry per column, with the quantities every
+/// row shares: r = e^{−|log s|}, rⁿ, Σ_{j<n} rʲ and the sign ± of the ratio q = r e^{±iθ}
+/// (+ for log s ≤ 0). Stored by quantity, so that a row's loops run over plain arrays.
+#[derive(Debug, Clone, Copy)]
+struct Columns {
+    log_s: [f64; GRID.1],
+    r: [f64; GRID.1],
+    r_n: [f64; GRID.1],
+    real: [f64; GRID.1],
+    sign: [f64; GRID.1],
 }
 
-impl Column {
-    fn new(log_s: f64, n: usize) -> Self {
-        let r = (-log_s.abs()).exp();
-        let real = (0..n).fold((0.0, 1.0), |(sum, p), _| (sum + p, p * r)).0;
-        let r_n = r.powi(i32::try_from(n).unwrap_or(i32::MAX));
+impl Columns {
+    fn new(log_s: [f64; GRID.1], n: usize) -> Self {
+        let r = log_s.map(|l| (-l.abs()).exp());
+        let exponent = i32::try_from(n).unwrap_or(i32::MAX);
         Self {
             log_s,
             r,
-            r_n,
-            real,
+            r_n: r.map(|r| r.powi(exponent)),
+            real: r.map(|r| (0..n).fold((0.0, 1.0), |(sum, p), _| (sum + p, p * r)).0),
+            sign: log_s.map(|l| if l <= 0.0 { 1.0 } else { -1.0 }),
+        }
+    }
+}
+
+/// The branch-independent parts of the Newton-start grid of one solve: the rows' [`RowBase`]
+/// at φᵢ = −π/2 + πi/36 (i = 0..=36) and the columns log s over [−σ, σ],
+/// σ = min(4, 10/(n − 1)) ([`LOG_RATIO_SPAN`]).
+#[derive(Debug, Clone, Copy)]
+struct StartGrid {
+    span: f64,
+    columns: Columns,
+    bases: [RowBase; GRID.0 + 1],
+}
+
+impl StartGrid {
+    fn new(setup: &Setup) -> Self {
+        let (np, ns) = GRID;
+        let span = (LOG_RATIO_SPAN / (setup.n - 1) as f64).min(4.0);
+        let frame = setup.chord_frame();
+        Self {
+            span,
+            columns: Columns::new(
+                std::array::from_fn(|j| -span + 2.0 * span * j as f64 / (ns - 1) as f64),
+                setup.n,
+            ),
+            bases: std::array::from_fn(|i| {
+                setup.row_base(-FRAC_PI_2 + PI * i as f64 / np as f64, &frame)
+            }),
         }
     }
 }
@@ -342,65 +372,66 @@ impl Setup {
         &self,
         base: &RowBase,
         theta: f64,
-        columns: &[Column; GRID.1],
-        out: &mut [[f64; 3]],
+        columns: &Columns,
+        out: &mut [[f64; GRID.1]; 3],
     ) {
         let (sin, cos) = theta.sin_cos();
         let turn = base.turn;
-        let ratio = columns.map(|c| {
-            Complex::new(
-                c.r * cos,
-                if c.log_s <= 0.0 {
-                    c.r * sin
-                } else {
-                    -c.r * sin
-                },
-            )
-        });
-        let mut sum = [Complex::new(0.0, 0.0); GRID.1];
+        // q = r e^{±iθ} per column, and the factor e^{i(n−1)θ} of the columns with log s > 0
+        // (1 elsewhere, which multiplies exactly).
+        let q_re: [f64; GRID.1] = std::array::from_fn(|j| columns.r[j] * cos);
+        let q_im: [f64; GRID.1] = std::array::from_fn(|j| columns.r[j] * (columns.sign[j] * sin));
+        let t_re = columns.log_s.map(|l| if l > 0.0 { turn.re } else { 1.0 });
+        let t_im = columns.log_s.map(|l| if l > 0.0 { turn.im } else { 0.0 });
+        let mut s_re = [0.0; GRID.1];
+        let mut s_im = [0.0; GRID.1];
         let mut factor = [1.0; GRID.1];
         if self.n >= ROW_CLOSED_FORM_DEGREE {
             // (1 − qⁿ)·conj(1 − q) with qⁿ = rⁿ e^{±inθ}; cells too close to q = 1 term by term.
             let full = turn * Complex::new(cos, sin);
             let (sin_n, cos_n) = (full.im, full.re);
-            for (((sum, factor), column), ratio) in
-                sum.iter_mut().zip(&mut factor).zip(columns).zip(&ratio)
-            {
-                let gap = Complex::new(1.0, 0.0) - *ratio;
-                let gap2 = gap.norm_sqr();
-                if gap2 >= ROW_CLOSED_FORM_GAP * ROW_CLOSED_FORM_GAP {
-                    let im = if column.log_s <= 0.0 { sin_n } else { -sin_n };
-                    let power = Complex::new(column.r_n * cos_n, column.r_n * im);
-                    *sum = (Complex::new(1.0, 0.0) - power) * gap.conj();
-                    *factor = gap2;
-                } else {
-                    let mut power = Complex::new(1.0, 0.0);
+            for j in 0..GRID.1 {
+                let (g_re, g_im) = (1.0 - q_re[j], 0.0 - q_im[j]);
+                let (a_re, a_im) = (
+                    1.0 - columns.r_n[j] * cos_n,
+                    0.0 - columns.r_n[j] * (columns.sign[j] * sin_n),
+                );
+                // (a_re + i a_im)(g_re − i g_im)
+                s_re[j] = a_re * g_re + a_im * g_im;
+                s_im[j] = a_im * g_re - a_re * g_im;
+                factor[j] = g_re * g_re + g_im * g_im;
+            }
+            for j in 0..GRID.1 {
+                if factor[j] < ROW_CLOSED_FORM_GAP * ROW_CLOSED_FORM_GAP {
+                    let ratio = Complex::new(q_re[j], q_im[j]);
+                    let (mut sum, mut power) = (Complex::new(0.0, 0.0), Complex::new(1.0, 0.0));
                     for _ in 0..self.n {
-                        *sum += power;
-                        power *= *ratio;
+                        sum += power;
+                        power *= ratio;
                     }
+                    (s_re[j], s_im[j], factor[j]) = (sum.re, sum.im, 1.0);
                 }
             }
         } else {
-            let mut power = [Complex::new(1.0, 0.0); GRID.1];
+            let (mut p_re, mut p_im) = ([1.0; GRID.1], [0.0; GRID.1]);
             for _ in 0..self.n {
-                for ((sum, power), ratio) in sum.iter_mut().zip(&mut power).zip(&ratio) {
-                    *sum += *power;
-                    *power *= *ratio;
+                for j in 0..GRID.1 {
+                    s_re[j] += p_re[j];
+                    s_im[j] += p_im[j];
+                    (p_re[j], p_im[j]) = (
+                        p_re[j] * q_re[j] - p_im[j] * q_im[j],
+                        p_re[j] * q_im[j] + p_im[j] * q_re[j],
+                    );
                 }
             }
         }
-        for (((cell, column), complex), factor) in out.iter_mut().zip(columns).zip(sum).zip(factor)
-        {
-            let complex = if column.log_s > 0.0 {
-                complex * turn
-            } else {
-                complex
-            };
-            let axial = base.a * column.real * factor;
-            *cell = std::array::from_fn(|m| {
-                axial * base.fu[m] + complex.re * base.fp[m] + complex.im * base.fq[m]
-            });
+        let re: [f64; GRID.1] = std::array::from_fn(|j| s_re[j] * t_re[j] - s_im[j] * t_im[j]);
+        let im: [f64; GRID.1] = std::array::from_fn(|j| s_re[j] * t_im[j] + s_im[j] * t_re[j]);
+        let axial: [f64; GRID.1] = std::array::from_fn(|j| base.a * columns.real[j] * factor[j]);
+        for (m, out) in out.iter_mut().enumerate() {
+            for j in 0..GRID.1 {
+                out[j] = axial[j] * base.fu[m] + re[j] * base.fp[m] + im[j] * base.fq[m];
+            }
         }
     }
 
@@ -500,9 +531,10 @@ impl TypicalSpatial {
     /// Guarantees: every returned curve meets the end conditions to the direction residual
     /// 1e-12 and is Class A (Farin's condition (3) for M, or for M⁻¹ when s < 1). Not
     /// guaranteed: that every solution is found. On 6,000 seeded random typical curves of degree
-    /// 3..20 (about 70 % turning by more than π) every Class A generator was recovered; 0.15 %
-    /// of the others were missed (a zero curve of the two components folding back inside a grid
-    /// cell). So [`ClassAError::NoClassASolution`] means no *found* solution is Class A.
+    /// 3..20 (about 70 % turning by more than π) 0–0.1 % of the Class A generators and 0.15–0.2 %
+    /// of the others were missed, depending on the seeds (a zero curve of the two components
+    /// folding back inside a grid cell). So [`ClassAError::NoClassASolution`] means no *found*
+    /// solution is Class A.
     ///
     /// # Errors
     /// [`ClassAError::DegreeTooLow`], [`ClassAError::NonFinite`], [`ClassAError::CoincidentPoints`],
@@ -553,6 +585,7 @@ impl TypicalSpatial {
         // its |θ| ≤ (m + 1)τ (every later branch turns more). −1 − m before m, as in the full
         // search, so a rotation found on both is kept in the same representation.
         let step = TAU / (degree - 1) as f64;
+        let grid = StartGrid::new(&setup);
         for m in 0i64.. {
             let group: Vec<i64> = [-1 - m, m]
                 .into_iter()
@@ -561,7 +594,7 @@ impl TypicalSpatial {
             if group.is_empty() {
                 break;
             }
-            Self::search(&setup, &a[0], &group, &mut all, &mut best_res)?;
+            Self::search(&setup, &grid, &a[0], &group, &mut all, &mut best_res)?;
             let bound = step * (m + 1) as f64;
             if let (Some(t), _) = Self::select(a, &all, requirement)
                 && t.theta.abs() <= bound
@@ -733,7 +766,14 @@ impl TypicalSpatial {
         let mut found: Vec<Self> = Vec::new();
         let mut best_res = f64::INFINITY;
         let all: Vec<i64> = setup.branches().collect();
-        Self::search(&setup, &a[0], &all, &mut found, &mut best_res)?;
+        Self::search(
+            &setup,
+            &StartGrid::new(&setup),
+            &a[0],
+            &all,
+            &mut found,
+            &mut best_res,
+        )?;
         if found.is_empty() {
             return Err(ClassAError::ChordUnreachable { residual: best_res });
         }
@@ -745,6 +785,7 @@ impl TypicalSpatial {
     /// adding distinct converged solutions to `found` and the smallest residual to `best_res`.
     fn search(
         setup: &Setup,
+        grid: &StartGrid,
         a0: &Vector3,
         ks: &[i64],
         found: &mut Vec<Self>,
@@ -752,56 +793,46 @@ impl TypicalSpatial {
     ) -> Result<(), ClassAError> {
         let degree = setup.n;
         let (np, ns) = GRID;
-        let span = (LOG_RATIO_SPAN / (degree - 1) as f64).min(4.0);
         // Corner values of the two conditions on a (φ, log s) grid closed over the period
         // (φ = π/2 is φ = −π/2 of the same branch continued); a cell where both change sign
-        // holds a crossing of their zero curves, and Newton starts at its centre.
-        let mut grid = vec![[0.0; 3]; (np + 1) * ns];
-        let phi_at = |i: usize| -FRAC_PI_2 + PI * i as f64 / np as f64;
-        let ls_at = |j: usize| -span + 2.0 * span * j as f64 / (ns - 1) as f64;
-        let frame = setup.chord_frame();
-        let columns: [Column; GRID.1] = std::array::from_fn(|j| Column::new(ls_at(j), degree));
-        let bases: Vec<RowBase> = (0..=np)
-            .map(|i| setup.row_base(phi_at(i), &frame))
-            .collect();
-        let mut errors = vec![0.0; (np + 1) * ns];
-        let mut signs = vec![0u8; (np + 1) * ns];
+        // holds a crossing of their zero curves, and Newton starts at its centre. Only each
+        // node's sign bits and start error are kept.
+        let mut errors = [2.0; (GRID.0 + 1) * GRID.1];
+        let mut signs = [[0u32; 4]; GRID.0 + 1];
+        let mut row = [[0.0; GRID.1]; 3];
         for &k in ks {
-            let thetas: Vec<f64> = bases
-                .iter()
-                .map(|b| (b.psi + TAU * k as f64) / (degree - 1) as f64)
-                .collect();
+            let thetas: [f64; GRID.0 + 1] =
+                std::array::from_fn(|i| (grid.bases[i].psi + TAU * k as f64) / (degree - 1) as f64);
             let near = |i: usize| {
                 (i.saturating_sub(1)..=(i + 1).min(np)).any(|x| thetas[x].abs() < FRAC_PI_2)
             };
             if !(0..=np).any(near) {
                 continue;
             }
-            for (i, base) in bases.iter().enumerate() {
-                let row = &mut grid[i * ns..(i + 1) * ns];
+            for ((i, base), signs) in grid.bases.iter().enumerate().zip(&mut signs) {
+                let errors = &mut errors[i * ns..(i + 1) * ns];
                 if near(i) {
-                    setup.row_conditions(base, thetas[i], &columns, row);
+                    setup.row_conditions(base, thetas[i], &grid.columns, &mut row);
+                    for (j, e) in errors.iter_mut().enumerate() {
+                        *e = start_error(&[row[0][j], row[1][j], row[2][j]]);
+                    }
+                    *signs = sign_masks(&row);
                 } else {
-                    row.fill([f64::NAN; 3]);
+                    // Not evaluated: no signs, no start.
+                    errors.fill(2.0);
+                    *signs = [0; 4];
                 }
-            }
-            for ((e, sign), c) in errors.iter_mut().zip(&mut signs).zip(&grid) {
-                *e = start_error(c);
-                *sign = sign_bits(c);
             }
             let mut starts: Vec<(f64, f64)> = Vec::new();
             for i in 0..np {
                 if thetas[i].abs() >= FRAC_PI_2 && thetas[i + 1].abs() >= FRAC_PI_2 {
                     continue;
                 }
-                for j in 0..ns - 1 {
-                    let corners = signs[i * ns + j]
-                        | signs[i * ns + j + 1]
-                        | signs[(i + 1) * ns + j]
-                        | signs[(i + 1) * ns + j + 1];
-                    if corners == BOTH_CHANGE {
-                        starts.push((i as f64 + 0.5, j as f64 + 0.5));
-                    }
+                let mut cells = sign_change_cells(&signs[i], &signs[i + 1]);
+                while cells != 0 {
+                    let j = cells.trailing_zeros();
+                    starts.push((i as f64 + 0.5, f64::from(j) + 0.5));
+                    cells &= cells - 1;
                 }
             }
             // Crossings thinner than a cell (a zero curve folding back inside it) show as
@@ -811,11 +842,11 @@ impl TypicalSpatial {
                     .into_iter()
                     .map(|(i, j)| (i as f64, j as f64)),
             );
-            let (dphi, dls) = (PI / np as f64, 2.0 * span / (ns - 1) as f64);
+            let (dphi, dls) = (PI / np as f64, 2.0 * grid.span / (ns - 1) as f64);
             let mut converged: Vec<(f64, f64)> = Vec::new();
             for (i, j) in starts {
                 let phi = -FRAC_PI_2 + dphi * i;
-                let ls = -span + dls * j;
+                let ls = -grid.span + dls * j;
                 // A start within half a cell of a solution of this branch finds it again.
                 if converged
                     .iter()
@@ -938,18 +969,31 @@ fn direction_error(c: &[f64; 3]) -> f64 {
     }
 }
 
-/// The signs of the two conditions at a grid node: bit 2m for component m ≤ 0, bit 2m + 1 for
-/// component m ≥ 0 (m = 0, 1; a zero sets both, NaN neither). A cell holds a sign change of
-/// both components iff the union of its corners' bits is [`BOTH_CHANGE`].
-fn sign_bits(c: &[f64; 3]) -> u8 {
-    u8::from(c[0] <= 0.0)
-        | (u8::from(c[0] >= 0.0) << 1)
-        | (u8::from(c[1] <= 0.0) << 2)
-        | (u8::from(c[1] >= 0.0) << 3)
+/// The signs of the two conditions along a grid row, as bit masks over the columns j: bit j of
+/// mask 2m is set where component m is ≤ 0, of mask 2m + 1 where it is ≥ 0 (m = 0, 1; a zero
+/// sets both, NaN neither).
+fn sign_masks(row: &[[f64; GRID.1]; 3]) -> [u32; 4] {
+    let mut masks = [0u32; 4];
+    for (m, component) in row[..2].iter().enumerate() {
+        for (j, &c) in component.iter().enumerate() {
+            masks[2 * m] |= u32::from(c <= 0.0) << j;
+            masks[2 * m + 1] |= u32::from(c >= 0.0) << j;
+        }
+    }
+    masks
 }
 
-/// All four bits of [`sign_bits`].
-const BOTH_CHANGE: u8 = 0b1111;
+/// The cells between two adjacent rows (their [`sign_masks`]) where both components change
+/// sign, as a bit mask over j < [`GRID`].1 − 1 (the cell of columns j, j + 1): the union of the
+/// four corners' signs holds ≤ 0 and ≥ 0 of each component.
+fn sign_change_cells(lower: &[u32; 4], upper: &[u32; 4]) -> u32 {
+    let mut cells = (1u32 << (GRID.1 - 1)) - 1;
+    for (l, u) in lower.iter().zip(upper) {
+        let both = l | u;
+        cells &= both | (both >> 1);
+    }
+    cells
+}
 
 /// [`direction_error`] where it can be at most [`MINIMUM_START`], else 2 (no local minimum
 /// there, and larger than every error that can be one, so the comparisons of
@@ -1113,20 +1157,22 @@ mod tests {
             let setup = Setup::new(&a, n).unwrap();
             let frame = setup.chord_frame();
             let span = (LOG_RATIO_SPAN / (n - 1) as f64).min(4.0);
-            let columns: [Column; GRID.1] = std::array::from_fn(|j| {
-                Column::new(-span + 2.0 * span * j as f64 / (GRID.1 - 1) as f64, n)
-            });
+            let columns = Columns::new(
+                std::array::from_fn(|j| -span + 2.0 * span * j as f64 / (GRID.1 - 1) as f64),
+                n,
+            );
             for k in setup.branches() {
                 for phi in [-1.5, -0.7, 0.0, 0.3, 1.2] {
                     let b = setup.branch(phi, k);
                     let base = setup.row_base(phi, &frame);
                     assert_eq!((base.psi + TAU * k as f64) / (n - 1) as f64, b.theta);
-                    let mut row = [[0.0; 3]; GRID.1];
+                    let mut row = [[0.0; GRID.1]; 3];
                     setup.row_conditions(&base, b.theta, &columns, &mut row);
-                    for (cell, column) in row.iter().zip(&columns) {
+                    for (j, log_s) in columns.log_s.into_iter().enumerate() {
+                        let cell = [row[0][j], row[1][j], row[2][j]];
                         // Each cell is Σ's frame components times a positive factor: equal
                         // directions, and signs.
-                        let sum = setup.scaled_sum(&b, column.log_s);
+                        let sum = setup.scaled_sum(&b, log_s);
                         let want = frame.map(|e| sum.dot(&e) / sum.norm());
                         let norm =
                             (cell[0] * cell[0] + cell[1] * cell[1] + cell[2] * cell[2]).sqrt();
@@ -1134,7 +1180,7 @@ mod tests {
                             assert!(
                                 (cell[m] / norm - want[m]).abs() <= 2e-12,
                                 "n {n} k {k} phi {phi} log s {}: {} vs {}",
-                                column.log_s,
+                                log_s,
                                 cell[m] / norm,
                                 want[m]
                             );

@@ -9,6 +9,7 @@
 
 use bez_core::{BezierForm, Vector, Vector2};
 
+use crate::hermite_search::Reduced;
 use crate::planar::signed_angle;
 use crate::square::{Matrix, Matrix2};
 use crate::{
@@ -179,7 +180,14 @@ impl Triangle {
 ///   (module docs). In the frame of the start tangent, with the chord scaled to length 1, the
 ///   unknowns (L, M₁₁, M₁₂, M₂₁, M₂₂) start at the typical curve's and Newton's method
 ///   (central-difference Jacobian, backtracking) follows the curvatures from the typical
-///   curve's to the prescribed ones by continuation (steps halved on failure).
+///   curve's to the prescribed ones by continuation (steps halved on failure). When that
+///   fails or its curve is refused, a global search takes over: every Class A curve meeting
+///   the G1 data is the affine image of a canonical one fixed by the trace and determinant of
+///   M, so the two curvature conditions become two equations in two unknowns (the largest
+///   eigenvalue modulus m of M and the eigenvalues' shape), solved from every cell of a grid
+///   over m ∈ [e^{−48/(n−1)}, e^{48/(n−1)}] and all shapes; each solution (nearest to the
+///   typical curve first) is polished by Newton's method on the five equations and checked as
+///   below, and the first that passes is returned.
 ///
 /// Before the solve the prescribed curvatures are checked against what any curve of monotone
 /// curvature with a convex control polygon in the tangent triangle α₀α₁α₂ can have: the
@@ -187,8 +195,9 @@ impl Triangle {
 /// min(|κ₀|, |κ₁|)·S and max(|κ₀|, |κ₁|)·S, where the arc length S is above the chord |α₂ − α₀|
 /// and below |α₁ − α₀| + |α₂ − α₁|; hence min |κ| < |ψ| / |α₂ − α₀| and
 /// max |κ| > |ψ| / (|α₁ − α₀| + |α₂ − α₁|). These are necessary, not sufficient: inside them the
-/// solve can still fail (a fold of the five equations, or a solution whose curvature is not
-/// monotone), which is an error, never an unchecked `Ok`.
+/// solve can still fail (no solution of the five equations in the searched range, or only
+/// solutions whose curvature is not monotone or whose rounded control points miss the
+/// tolerance), which is an error, never an unchecked `Ok`.
 ///
 /// The result is verified on its rounded control points: end points and tangents within
 /// [`INTERPOLATION_TOLERANCE`] ([`Interpolation`]), the legs turning one way by ψ in total,
@@ -218,8 +227,9 @@ impl Triangle {
 /// curvature given at one end only), [`ClassAError::CoincidentPoints`],
 /// [`ClassAError::DegenerateTurn`], [`ClassAError::ChordOutsideTangents`];
 /// [`ClassAError::CurvatureUnreachable`] naming the end and its reachable range;
-/// [`ClassAError::NoConvergence`]; [`ClassAError::ToleranceNotMet`];
-/// [`ClassAError::CurvatureNotMonotone`]; without curvatures, the errors of
+/// [`ClassAError::NoConvergence`] (no solution found by the continuation or the search);
+/// [`ClassAError::ToleranceNotMet`]; [`ClassAError::CurvatureNotMonotone`] (a solution was
+/// found, and none found has monotone curvature); without curvatures, the errors of
 /// [`TypicalPlanar::from_points`].
 pub fn hermite_planar(
     start: &Knot,
@@ -245,11 +255,13 @@ pub fn hermite_planar(
             });
         }
     };
-    let cert = curvature_certificate(curve.as_bezier())?;
-    if !cert.is_monotone() {
-        return Err(ClassAError::CurvatureNotMonotone {
-            verdict: cert.verdict,
-        });
+    if start.curvature.is_none() {
+        let cert = curvature_certificate(curve.as_bezier())?;
+        if !cert.is_monotone() {
+            return Err(ClassAError::CurvatureNotMonotone {
+                verdict: cert.verdict,
+            });
+        }
     }
     Ok(curve)
 }
@@ -257,6 +269,8 @@ pub fn hermite_planar(
 /// Residual tolerance of the Newton iteration (relative: chord 1, curvatures and turn divided by
 /// their targets).
 const NEWTON_TOLERANCE: f64 = 1e-13;
+/// Residual up to which a seed of the global search is checked without polishing.
+const SEED_TOLERANCE: f64 = 1e-10;
 /// Newton iterations per continuation step.
 const NEWTON_ITERATIONS: usize = 16;
 /// Smallest continuation step before giving up.
@@ -389,7 +403,7 @@ fn solve_g2(
     }
     let mut x = [1.0 / sum.norm(), s * cs, -s * sn, s * sn, s * cs];
     let no_convergence = |residual: f64| ClassAError::NoConvergence {
-        method: "G2 Hermite continuation",
+        method: "G2 Hermite continuation and global search",
         residual,
     };
     let (_, (c0, c1)) = system
@@ -416,20 +430,61 @@ fn solve_g2(
             }
         }
     }
-    if tau < 1.0 {
-        let r = system
-            .residual(&x, t0, t1s)
-            .map_or(f64::INFINITY, |(r, _)| {
-                r.iter().fold(0.0f64, |a, v| a.max(v.abs()))
-            });
-        return Err(no_convergence(r));
-    }
+    let continued = (tau >= 1.0).then_some(x);
+    // The global search (module `hermite_search`) when the continuation's curve is refused.
+    let near = [s.ln(), (tri.turn / std::f64::consts::PI).powi(2)];
+    let searched = std::iter::once_with(|| {
+        Reduced::new(degree, system.chord, system.end_tangent, t0, t1s)
+            .map_or_else(Vec::new, |r| r.seeds(near))
+    })
+    .flatten();
     // Back to the world frame: M_world = R M Rᵀ with R = [e1 e2], first leg L·|chord|·e1.
     let rot = Matrix2::new(e1.x(), e2.x(), e1.y(), e2.y());
-    let m = rot * Matrix2::new(x[1], x[2], x[3], x[4]) * rot.transpose();
-    let curve = ClassACurve::new(&start.point, &(e1 * (x[0] * tri.chord)), &m, degree)?;
-    verify(&curve, start, end, tri.turn, k0, k1)?;
-    Ok(curve)
+    let mut refusal = None;
+    for seed in continued.into_iter().chain(searched) {
+        // A seed of the search already meets the equations to about 1e-12; where rounding
+        // keeps Newton from improving it further, it goes to the checks as it is.
+        let polished = system.newton(seed, t0, t1s).or_else(|| {
+            system
+                .residual(&seed, t0, t1s)
+                .filter(|(r, _)| r.iter().all(|v| v.abs() <= SEED_TOLERANCE))
+                .map(|_| seed)
+        });
+        let Some(x) = polished else {
+            continue;
+        };
+        let m = rot * Matrix2::new(x[1], x[2], x[3], x[4]) * rot.transpose();
+        let checked = ClassACurve::new(&start.point, &(e1 * (x[0] * tri.chord)), &m, degree)
+            .and_then(|curve| {
+                verify(&curve, start, end, tri.turn, k0, k1)?;
+                let cert = curvature_certificate(curve.as_bezier())?;
+                if cert.is_monotone() {
+                    Ok(curve)
+                } else {
+                    Err(ClassAError::CurvatureNotMonotone {
+                        verdict: cert.verdict,
+                    })
+                }
+            });
+        match checked {
+            Ok(curve) => return Ok(curve),
+            // A solution whose curvature is not monotone says more than one off by rounding.
+            Err(e) => {
+                if !matches!(refusal, Some(ClassAError::CurvatureNotMonotone { .. })) {
+                    refusal = Some(e);
+                }
+            }
+        }
+    }
+    Err(refusal.unwrap_or_else(|| {
+        no_convergence(
+            system
+                .residual(&x, t0, t1s)
+                .map_or(f64::INFINITY, |(r, _)| {
+                    r.iter().fold(0.0f64, |a, v| a.max(v.abs()))
+                }),
+        )
+    }))
 }
 
 /// The checks of [`hermite_planar`] on the rounded control points.

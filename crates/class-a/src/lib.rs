@@ -38,6 +38,7 @@ mod exact;
 mod filter;
 mod general;
 mod hermite;
+mod hermite_search;
 mod hermite_spatial;
 mod interpolation;
 mod lcg;

@@ -49,3 +49,43 @@ pub(crate) fn perturbed_typical(state: &mut u64) -> (usize, Matrix2) {
     let delta = [0; 4].map(|_| 0.05 * (2.0 * uniform(state) - 1.0));
     (n, perturb2(&typical_matrix2(s, theta), delta))
 }
+
+/// The next random general matrix (seed the state with any value): degree 3..12, M = P J P⁻¹
+/// with J a rotation-scaling m R(φ) (φ up to π/(n − 1)) or, one time in three, diag(m, ρm)
+/// (ρ ∈ [0.2, 1)), m = e^{±0.4}, and P with entries 1 + [−0.6, 0.6] on and [−0.6, 0.6] off the
+/// diagonal (|det P| ≥ 0.2); the first leg is a random unit vector. Returns (n, first leg, M).
+/// Not every such curve turns one way by less than π or has monotone curvature: callers filter.
+pub(crate) fn random_general(state: &mut u64) -> (usize, Vector2, Matrix2) {
+    let n = 3 + (uniform(state) * 10.0) as usize;
+    let m = (0.8 * uniform(state) - 0.4).exp();
+    let j = if uniform(state) < 1.0 / 3.0 {
+        let rho = 0.2 + 0.8 * uniform(state);
+        Matrix2::new(m, 0.0, 0.0, rho * m)
+    } else {
+        let phi = std::f64::consts::PI / (n - 1) as f64 * uniform(state);
+        typical_matrix2(m, phi)
+    };
+    let p = loop {
+        let e = [0; 4].map(|_| 1.2 * uniform(state) - 0.6);
+        let p = Matrix2::new(1.0 + e[0], e[1], e[2], 1.0 + e[3]);
+        if (p[(0, 0)] * p[(1, 1)] - p[(0, 1)] * p[(1, 0)]).abs() >= 0.2 {
+            break p;
+        }
+    };
+    let det = p[(0, 0)] * p[(1, 1)] - p[(0, 1)] * p[(1, 0)];
+    let inverse = Matrix2::new(p[(1, 1)], -p[(0, 1)], -p[(1, 0)], p[(0, 0)]) * (1.0 / det);
+    let angle = 2.0 * std::f64::consts::PI * uniform(state);
+    (n, Vector2::new(angle.cos(), angle.sin()), p * j * inverse)
+}
+
+/// Whether the control polygon turns one way, by less than π in total (the shape the G2 solve
+/// returns).
+pub(crate) fn turns_one_way(points: &[Vector2]) -> bool {
+    let legs: Vec<Vector2> = points.windows(2).map(|w| w[1] - w[0]).collect();
+    let turns: Vec<f64> = legs
+        .windows(2)
+        .map(|w| w[0].perp(&w[1]).atan2(w[0].dot(&w[1])))
+        .collect();
+    let total: f64 = turns.iter().sum();
+    turns.iter().all(|t| t * total > 0.0) && total.abs() > 1e-3 && total.abs() < 3.1
+}

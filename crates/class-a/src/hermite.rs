@@ -9,6 +9,7 @@
 
 use bez_core::{BezierForm, Vector, Vector2};
 
+use crate::continuation::{NEWTON_ITERATIONS, NEWTON_TOLERANCE, backtrack, continuation, max_norm};
 use crate::hermite_search::Reduced;
 use crate::planar::signed_angle;
 use crate::square::{Matrix, Matrix2};
@@ -266,17 +267,8 @@ pub fn hermite_planar(
     Ok(curve)
 }
 
-/// Residual tolerance of the Newton iteration (relative: chord 1, curvatures and turn divided by
-/// their targets).
-const NEWTON_TOLERANCE: f64 = 1e-13;
 /// Residual up to which a seed of the global search is checked without polishing.
 const SEED_TOLERANCE: f64 = 1e-10;
-/// Newton iterations per continuation step.
-const NEWTON_ITERATIONS: usize = 16;
-/// Smallest continuation step before giving up.
-const MIN_STEP: f64 = 1.0 / 1024.0;
-/// Most continuation steps tried (accepted or halved).
-const MAX_STEPS: usize = 256;
 
 /// The five equations in the frame of the start tangent (chord of length 1).
 struct System {
@@ -327,7 +319,7 @@ impl System {
 
     /// Newton's method from x for targets (k0, k1); Some(x) when converged.
     fn newton(&self, mut x: [f64; 5], k0: f64, k1: f64) -> Option<[f64; 5]> {
-        let norm = |r: &[f64; 5]| r.iter().fold(0.0f64, |a, v| a.max(v.abs()));
+        let norm = |r: &[f64; 5]| max_norm(r);
         let (mut r, _) = self.residual(&x, k0, k1)?;
         for _ in 0..NEWTON_ITERATIONS {
             let current = norm(&r);
@@ -347,23 +339,9 @@ impl System {
                 }
             }
             let dx = jac.solve(&Vector::from_array(r.map(|v| -v))).ok()?;
-            let mut lambda = 1.0;
-            loop {
-                let mut trial = x;
-                for (t, d) in trial.iter_mut().zip(dx.iter()) {
-                    *t += lambda * d;
-                }
-                if let Some((rt, _)) = self.residual(&trial, k0, k1)
-                    && norm(&rt) < current
-                {
-                    (x, r) = (trial, rt);
-                    break;
-                }
-                lambda *= 0.5;
-                if lambda < 1e-4 {
-                    return None;
-                }
-            }
+            (x, r) = backtrack(&x, &dx.to_array(), current, |trial| {
+                self.residual(trial, k0, k1).map(|(r, _)| r)
+            })?;
         }
         (norm(&r) <= NEWTON_TOLERANCE).then_some(x)
     }
@@ -401,7 +379,7 @@ fn solve_g2(
             sn * power.x() + cs * power.y(),
         ) * s;
     }
-    let mut x = [1.0 / sum.norm(), s * cs, -s * sn, s * sn, s * cs];
+    let x = [1.0 / sum.norm(), s * cs, -s * sn, s * sn, s * cs];
     let no_convergence = |residual: f64| ClassAError::NoConvergence {
         method: "G2 Hermite continuation and global search",
         residual,
@@ -410,27 +388,11 @@ fn solve_g2(
         .residual(&x, 1.0, 1.0)
         .ok_or(no_convergence(f64::INFINITY))?;
     let (t0, t1s) = (k0 * tri.chord, k1 * tri.chord);
-    let (mut tau, mut step) = (0.0f64, 1.0f64);
-    for _ in 0..MAX_STEPS {
-        if tau >= 1.0 {
-            break;
-        }
-        let next = (tau + step).min(1.0);
-        let target = |from: f64, to: f64| from + (to - from) * next;
-        match system.newton(x, target(c0, t0), target(c1, t1s)) {
-            Some(solved) => {
-                (x, tau) = (solved, next);
-                step = (2.0 * step).min(1.0);
-            }
-            None => {
-                step *= 0.5;
-                if step < MIN_STEP {
-                    break;
-                }
-            }
-        }
-    }
-    let continued = (tau >= 1.0).then_some(x);
+    let (x, reached) = continuation(x, |from, next| {
+        let target = |a: f64, b: f64| a + (b - a) * next;
+        system.newton(from, target(c0, t0), target(c1, t1s))
+    });
+    let continued = reached.then_some(x);
     // The global search (module `hermite_search`) when the continuation's curve is refused.
     let near = [s.ln(), (tri.turn / std::f64::consts::PI).powi(2)];
     let searched = std::iter::once_with(|| {
@@ -480,9 +442,7 @@ fn solve_g2(
         no_convergence(
             system
                 .residual(&x, t0, t1s)
-                .map_or(f64::INFINITY, |(r, _)| {
-                    r.iter().fold(0.0f64, |a, v| a.max(v.abs()))
-                }),
+                .map_or(f64::INFINITY, |(r, _)| max_norm(&r)),
         )
     }))
 }

@@ -29,6 +29,7 @@
 //! ```
 
 mod certificate;
+mod continuation;
 mod curve;
 mod dd;
 mod edit;

@@ -1,6 +1,8 @@
 //! What the planar and spatial G2 solves ([`crate::hermite_planar`],
-//! [`crate::hermite_spatial`]) share: the Newton tolerances, the backtracking step and the
-//! continuation from the typical curve's values to the targets.
+//! [`crate::hermite_spatial`]) share: the Newton tolerances, the backtracking step, the
+//! continuation from the typical curve's values to the targets, and the checks of the result.
+
+use crate::{ClassAError, INTERPOLATION_TOLERANCE};
 
 /// Residual tolerance of the Newton iterations (relative: chord 1, curvatures divided by their
 /// targets, directions as sines of angles).
@@ -65,4 +67,24 @@ pub(crate) fn continuation<X: Copy>(
         }
     }
     (x, done >= 1.0)
+}
+
+/// [`ClassAError::ToleranceNotMet`] naming `condition` when the error `achieved` is above
+/// [`INTERPOLATION_TOLERANCE`] or NaN.
+pub(crate) fn within_tolerance(condition: &'static str, achieved: f64) -> Result<(), ClassAError> {
+    if achieved.is_nan() || achieved > INTERPOLATION_TOLERANCE {
+        return Err(ClassAError::ToleranceNotMet {
+            condition,
+            achieved,
+            tolerance: INTERPOLATION_TOLERANCE,
+        });
+    }
+    Ok(())
+}
+
+/// The end curvatures `got` (start, end) against the targets `want`, relative, by
+/// [`within_tolerance`].
+pub(crate) fn check_end_curvatures(got: [f64; 2], want: [f64; 2]) -> Result<(), ClassAError> {
+    within_tolerance("start curvature", (got[0] / want[0] - 1.0).abs())?;
+    within_tolerance("end curvature", (got[1] / want[1] - 1.0).abs())
 }

@@ -9,7 +9,10 @@
 
 use bez_core::{BezierForm, Vector, Vector2};
 
-use crate::continuation::{NEWTON_ITERATIONS, NEWTON_TOLERANCE, backtrack, continuation, max_norm};
+use crate::continuation::{
+    NEWTON_ITERATIONS, NEWTON_TOLERANCE, backtrack, check_end_curvatures, continuation, max_norm,
+    within_tolerance,
+};
 use crate::hermite_search::Reduced;
 use crate::planar::signed_angle;
 use crate::square::{Matrix, Matrix2};
@@ -472,23 +475,8 @@ fn verify(
         }
         total += a;
     }
-    if (total - turn).abs() > INTERPOLATION_TOLERANCE {
-        return Err(ClassAError::ToleranceNotMet {
-            condition: "total turn",
-            achieved: (total - turn).abs(),
-            tolerance: INTERPOLATION_TOLERANCE,
-        });
-    }
+    within_tolerance("total turn", (total - turn).abs())?;
     let (c0, c1) = end_curvatures(bezier)?;
-    for (condition, got, want) in [("start curvature", c0, k0), ("end curvature", c1, k1)] {
-        let achieved = (got / want - 1.0).abs();
-        if achieved.is_nan() || achieved > INTERPOLATION_TOLERANCE {
-            return Err(ClassAError::ToleranceNotMet {
-                condition,
-                achieved,
-                tolerance: INTERPOLATION_TOLERANCE,
-            });
-        }
-    }
+    check_end_curvatures([c0, c1], [k0, k1])?;
     Ok(())
 }

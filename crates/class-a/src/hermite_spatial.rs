@@ -10,7 +10,10 @@
 
 use bez_core::{BezierForm, Vector, Vector3};
 
-use crate::continuation::{NEWTON_ITERATIONS, NEWTON_TOLERANCE, backtrack, continuation, max_norm};
+use crate::continuation::{
+    NEWTON_ITERATIONS, NEWTON_TOLERANCE, backtrack, check_end_curvatures, continuation, max_norm,
+    within_tolerance,
+};
 use crate::square::{Matrix, Matrix3};
 use crate::{
     ClassACurve, ClassAError, INTERPOLATION_TOLERANCE, Interpolation, SpatialRequirement,
@@ -493,19 +496,7 @@ fn verify(
     let p = curve.as_bezier().points();
     Interpolation::measure(p, &a[0], t0, t1, &a[3]).within(INTERPOLATION_TOLERANCE)?;
     let [(c0, _), (c1, _)] = end_curvatures_torsions(curve.as_bezier())?;
-    for (condition, got, want) in [
-        ("start curvature", c0 * c, targets.k0),
-        ("end curvature", c1 * c, targets.k1),
-    ] {
-        let achieved = (got / want - 1.0).abs();
-        if achieved.is_nan() || achieved > INTERPOLATION_TOLERANCE {
-            return Err(ClassAError::ToleranceNotMet {
-                condition,
-                achieved,
-                tolerance: INTERPOLATION_TOLERANCE,
-            });
-        }
-    }
+    check_end_curvatures([c0 * c, c1 * c], [targets.k0, targets.k1])?;
     let n = p.len() - 1;
     let leg = |i: usize| p[i + 1] - p[i];
     for (condition, want, got) in [
@@ -514,14 +505,7 @@ fn verify(
     ] {
         if let Some(b) = want {
             let g = got / got.norm();
-            let achieved = 2.0 * (0.5 * (g - b).norm()).min(1.0).asin();
-            if achieved.is_nan() || achieved > INTERPOLATION_TOLERANCE {
-                return Err(ClassAError::ToleranceNotMet {
-                    condition,
-                    achieved,
-                    tolerance: INTERPOLATION_TOLERANCE,
-                });
-            }
+            within_tolerance(condition, 2.0 * (0.5 * (g - b).norm()).min(1.0).asin())?;
         }
     }
     Ok(())

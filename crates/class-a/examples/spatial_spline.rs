@@ -15,39 +15,14 @@
 //! ```
 #![allow(clippy::print_stdout, reason = "an example reports on the terminal")]
 
+#[path = "../tests/common/spatial_g2.rs"]
+mod spatial_g2;
+
 use bez_core::{BezierCurve, Vector3};
 use class_a::{
     ClassAError, SpatialClassASpline, SpatialKnot, TypicalSpatial, curvature_certificate,
     hermite_spatial, rotation, torsion_certificate,
 };
-
-/// Knots on the conical spiral e^{ct}(cos t, sin t, h) at t = 0, 1.1, 2.2, 3.3, with its
-/// curvature and binormal if asked.
-fn spiral_knots(with_g2: bool) -> Vec<SpatialKnot> {
-    let (c, h) = (0.4f64, 0.8f64);
-    (0..4)
-        .map(|i| {
-            let t = 1.1 * f64::from(i);
-            let (sn, cs) = t.sin_cos();
-            let e = (c * t).exp();
-            let d1 = Vector3::new(c * cs - sn, c * sn + cs, c * h) * e;
-            let d2 = Vector3::new(
-                (c * c - 1.0) * cs - 2.0 * c * sn,
-                (c * c - 1.0) * sn + 2.0 * c * cs,
-                c * c * h,
-            ) * e;
-            let knot = SpatialKnot::new(Vector3::new(cs, sn, h) * e, d1);
-            if with_g2 {
-                let b = d1.cross(&d2);
-                let n1 = d1.norm();
-                knot.with_curvature(b.norm() / (n1 * n1 * n1))
-                    .with_binormal(b)
-            } else {
-                knot
-            }
-        })
-        .collect()
-}
 
 /// Unit tangent, curvature and unit binormal at t.
 fn frame(c: &BezierCurve<3>, t: f64) -> Result<(Vector3, f64, Vector3), ClassAError> {
@@ -171,13 +146,13 @@ fn recovery() -> Result<(), ClassAError> {
 fn main() -> Result<(), ClassAError> {
     report(
         "G1 spline",
-        &SpatialClassASpline::new(spiral_knots(false), 6)?,
+        &SpatialClassASpline::new(spatial_g2::spiral_knots(4, false), 6)?,
     )?;
     report(
         "G2 spline",
-        &SpatialClassASpline::new(spiral_knots(true), 6)?,
+        &SpatialClassASpline::new(spatial_g2::spiral_knots(4, true), 6)?,
     )?;
-    let auto = SpatialClassASpline::with_g2_joints(spiral_knots(false), 6)?;
+    let auto = SpatialClassASpline::with_g2_joints(spatial_g2::spiral_knots(4, false), 6)?;
     report(
         "G2 spline, curvatures and binormals chosen from the G1 one",
         &auto,

@@ -47,32 +47,40 @@ fn report(name: &str, spline: &ClassASpline) -> Result<(), ClassAError> {
 
 /// G2 data of 400 perturbed typical curves (as in the test `g2_recovers_perturbed_class_a_curves`):
 /// how many with proven monotone curvature are solved, and recover their matrix.
-fn recovery() -> Result<(), ClassAError> {
+fn recovery() {
     let mut state = 12_345u64;
     let (mut known, mut solved, mut same) = (0, 0, 0);
     for _ in 0..400 {
         let (n, m) = g2::perturbed_typical(&mut state);
-        let curve = class_a_curve(&Vector2::new(0.0, 0.0), &Vector2::new(1.0, 0.0), &m, n)?;
-        if !curvature_certificate(&curve)?.is_monotone() {
-            continue;
-        }
-        let p = curve.points();
-        let (k0, k1) = end_curvatures(&curve)?;
-        let start = Knot::new(p[0], p[1] - p[0]).with_curvature(k0);
-        let end = Knot::new(p[n], p[n] - p[n - 1]).with_curvature(k1);
-        known += 1;
-        if let Ok(found) = hermite_planar(&start, &end, n) {
-            solved += 1;
-            if (found.matrix() - m).iter().all(|v| v.abs() < 1e-6) {
-                same += 1;
-            }
+        if let Some(back) = g2::solve_back(n, Vector2::new(1.0, 0.0), &m, false) {
+            known += 1;
+            solved += usize::from(back.result.is_ok());
+            same += usize::from(back.same);
         }
     }
     println!();
     println!(
         "perturbed Class A curves with monotone curvature: {known}; G2 data solved: {solved}; generating matrix recovered to 1e-6: {same}"
     );
-    Ok(())
+}
+
+/// G2 data of 200 random general-matrix curves that turn one way by less than π with proven
+/// monotone curvature (as in the test `g2_solves_random_general_class_a_curves`): how many are
+/// solved, and how many by the generating matrix.
+fn random_general() {
+    let mut state = 2_024u64;
+    let (mut known, mut solved, mut same) = (0, 0, 0);
+    while known < 200 {
+        let (n, v, m) = g2::random_general(&mut state);
+        if let Some(back) = g2::solve_back(n, v, &m, true) {
+            known += 1;
+            solved += usize::from(back.result.is_ok());
+            same += usize::from(back.same);
+        }
+    }
+    println!(
+        "random general-matrix curves with monotone curvature: {known}; G2 data solved: {solved}; generating matrix recovered to 1e-6: {same}"
+    );
 }
 
 /// G1 knots of the typical curve with scale s and angle θ per leg.
@@ -103,13 +111,15 @@ fn main() -> Result<(), ClassAError> {
         "G2 reach: end curvatures of the typical curve scaled by {factors:?} each ({} targets per row)",
         2 * factors.len() * factors.len()
     );
-    println!("| n | turn ψ | reached | outside the bounds | not monotone | no convergence |");
-    println!("|---|---|---|---|---|---|");
+    println!(
+        "| n | turn ψ | reached | outside the bounds | not monotone | tolerance not met | no solution found |"
+    );
+    println!("|---|---|---|---|---|---|---|");
     for n in [4usize, 7, 12] {
         for turn in [0.3, 0.6, 1.2, 2.0, 2.8] {
             let theta = turn / (n - 1) as f64;
             let c = theta.cos();
-            let mut counts = [0usize; 4];
+            let mut counts = [0usize; 5];
             // Curvature decreasing from the start (s cos θ > 1) and increasing (s < cos θ).
             for s in [1.0 / c + 0.1, c - 0.1] {
                 let (start, end, curve) = typical(s, theta, n)?;
@@ -125,17 +135,20 @@ fn main() -> Result<(), ClassAError> {
                             Ok(_) => 0,
                             Err(ClassAError::CurvatureUnreachable { .. }) => 1,
                             Err(ClassAError::CurvatureNotMonotone { .. }) => 2,
-                            Err(_) => 3,
+                            Err(ClassAError::ToleranceNotMet { .. }) => 3,
+                            Err(_) => 4,
                         };
                         counts[slot] += 1;
                     }
                 }
             }
             println!(
-                "| {n} | {turn} | {} | {} | {} | {} |",
-                counts[0], counts[1], counts[2], counts[3]
+                "| {n} | {turn} | {} | {} | {} | {} | {} |",
+                counts[0], counts[1], counts[2], counts[3], counts[4]
             );
         }
     }
-    recovery()
+    recovery();
+    random_general();
+    Ok(())
 }

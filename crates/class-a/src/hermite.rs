@@ -9,6 +9,11 @@
 
 use bez_core::{BezierForm, Vector, Vector2};
 
+use crate::continuation::{
+    NEWTON_ITERATIONS, NEWTON_TOLERANCE, backtrack, check_end_curvatures, continuation, max_norm,
+    within_tolerance,
+};
+use crate::hermite_search::Reduced;
 use crate::planar::signed_angle;
 use crate::square::{Matrix, Matrix2};
 use crate::{
@@ -179,7 +184,14 @@ impl Triangle {
 ///   (module docs). In the frame of the start tangent, with the chord scaled to length 1, the
 ///   unknowns (L, M₁₁, M₁₂, M₂₁, M₂₂) start at the typical curve's and Newton's method
 ///   (central-difference Jacobian, backtracking) follows the curvatures from the typical
-///   curve's to the prescribed ones by continuation (steps halved on failure).
+///   curve's to the prescribed ones by continuation (steps halved on failure). When that
+///   fails or its curve is refused, a global search takes over: every Class A curve meeting
+///   the G1 data is the affine image of a canonical one fixed by the trace and determinant of
+///   M, so the two curvature conditions become two equations in two unknowns (the largest
+///   eigenvalue modulus m of M and the eigenvalues' shape), solved from every cell of a grid
+///   over m ∈ [e^{−48/(n−1)}, e^{48/(n−1)}] and all shapes; each solution (nearest to the
+///   typical curve first) is polished by Newton's method on the five equations and checked as
+///   below, and the first that passes is returned.
 ///
 /// Before the solve the prescribed curvatures are checked against what any curve of monotone
 /// curvature with a convex control polygon in the tangent triangle α₀α₁α₂ can have: the
@@ -187,8 +199,9 @@ impl Triangle {
 /// min(|κ₀|, |κ₁|)·S and max(|κ₀|, |κ₁|)·S, where the arc length S is above the chord |α₂ − α₀|
 /// and below |α₁ − α₀| + |α₂ − α₁|; hence min |κ| < |ψ| / |α₂ − α₀| and
 /// max |κ| > |ψ| / (|α₁ − α₀| + |α₂ − α₁|). These are necessary, not sufficient: inside them the
-/// solve can still fail (a fold of the five equations, or a solution whose curvature is not
-/// monotone), which is an error, never an unchecked `Ok`.
+/// solve can still fail (no solution of the five equations in the searched range, or only
+/// solutions whose curvature is not monotone or whose rounded control points miss the
+/// tolerance), which is an error, never an unchecked `Ok`.
 ///
 /// The result is verified on its rounded control points: end points and tangents within
 /// [`INTERPOLATION_TOLERANCE`] ([`Interpolation`]), the legs turning one way by ψ in total,
@@ -218,8 +231,9 @@ impl Triangle {
 /// curvature given at one end only), [`ClassAError::CoincidentPoints`],
 /// [`ClassAError::DegenerateTurn`], [`ClassAError::ChordOutsideTangents`];
 /// [`ClassAError::CurvatureUnreachable`] naming the end and its reachable range;
-/// [`ClassAError::NoConvergence`]; [`ClassAError::ToleranceNotMet`];
-/// [`ClassAError::CurvatureNotMonotone`]; without curvatures, the errors of
+/// [`ClassAError::NoConvergence`] (no solution found by the continuation or the search);
+/// [`ClassAError::ToleranceNotMet`]; [`ClassAError::CurvatureNotMonotone`] (a solution was
+/// found, and none found has monotone curvature); without curvatures, the errors of
 /// [`TypicalPlanar::from_points`].
 pub fn hermite_planar(
     start: &Knot,
@@ -245,24 +259,19 @@ pub fn hermite_planar(
             });
         }
     };
-    let cert = curvature_certificate(curve.as_bezier())?;
-    if !cert.is_monotone() {
-        return Err(ClassAError::CurvatureNotMonotone {
-            verdict: cert.verdict,
-        });
+    if start.curvature.is_none() {
+        let cert = curvature_certificate(curve.as_bezier())?;
+        if !cert.is_monotone() {
+            return Err(ClassAError::CurvatureNotMonotone {
+                verdict: cert.verdict,
+            });
+        }
     }
     Ok(curve)
 }
 
-/// Residual tolerance of the Newton iteration (relative: chord 1, curvatures and turn divided by
-/// their targets).
-const NEWTON_TOLERANCE: f64 = 1e-13;
-/// Newton iterations per continuation step.
-const NEWTON_ITERATIONS: usize = 16;
-/// Smallest continuation step before giving up.
-const MIN_STEP: f64 = 1.0 / 1024.0;
-/// Most continuation steps tried (accepted or halved).
-const MAX_STEPS: usize = 256;
+/// Residual up to which a seed of the global search is checked without polishing.
+const SEED_TOLERANCE: f64 = 1e-10;
 
 /// The five equations in the frame of the start tangent (chord of length 1).
 struct System {
@@ -313,7 +322,7 @@ impl System {
 
     /// Newton's method from x for targets (k0, k1); Some(x) when converged.
     fn newton(&self, mut x: [f64; 5], k0: f64, k1: f64) -> Option<[f64; 5]> {
-        let norm = |r: &[f64; 5]| r.iter().fold(0.0f64, |a, v| a.max(v.abs()));
+        let norm = |r: &[f64; 5]| max_norm(r);
         let (mut r, _) = self.residual(&x, k0, k1)?;
         for _ in 0..NEWTON_ITERATIONS {
             let current = norm(&r);
@@ -333,23 +342,9 @@ impl System {
                 }
             }
             let dx = jac.solve(&Vector::from_array(r.map(|v| -v))).ok()?;
-            let mut lambda = 1.0;
-            loop {
-                let mut trial = x;
-                for (t, d) in trial.iter_mut().zip(dx.iter()) {
-                    *t += lambda * d;
-                }
-                if let Some((rt, _)) = self.residual(&trial, k0, k1)
-                    && norm(&rt) < current
-                {
-                    (x, r) = (trial, rt);
-                    break;
-                }
-                lambda *= 0.5;
-                if lambda < 1e-4 {
-                    return None;
-                }
-            }
+            (x, r) = backtrack(&x, &dx.to_array(), current, |trial| {
+                self.residual(trial, k0, k1).map(|(r, _)| r)
+            })?;
         }
         (norm(&r) <= NEWTON_TOLERANCE).then_some(x)
     }
@@ -387,49 +382,72 @@ fn solve_g2(
             sn * power.x() + cs * power.y(),
         ) * s;
     }
-    let mut x = [1.0 / sum.norm(), s * cs, -s * sn, s * sn, s * cs];
+    let x = [1.0 / sum.norm(), s * cs, -s * sn, s * sn, s * cs];
     let no_convergence = |residual: f64| ClassAError::NoConvergence {
-        method: "G2 Hermite continuation",
+        method: "G2 Hermite continuation and global search",
         residual,
     };
     let (_, (c0, c1)) = system
         .residual(&x, 1.0, 1.0)
         .ok_or(no_convergence(f64::INFINITY))?;
     let (t0, t1s) = (k0 * tri.chord, k1 * tri.chord);
-    let (mut tau, mut step) = (0.0f64, 1.0f64);
-    for _ in 0..MAX_STEPS {
-        if tau >= 1.0 {
-            break;
-        }
-        let next = (tau + step).min(1.0);
-        let target = |from: f64, to: f64| from + (to - from) * next;
-        match system.newton(x, target(c0, t0), target(c1, t1s)) {
-            Some(solved) => {
-                (x, tau) = (solved, next);
-                step = (2.0 * step).min(1.0);
-            }
-            None => {
-                step *= 0.5;
-                if step < MIN_STEP {
-                    break;
+    let (x, reached) = continuation(x, |from, next| {
+        let target = |a: f64, b: f64| a + (b - a) * next;
+        system.newton(from, target(c0, t0), target(c1, t1s))
+    });
+    let continued = reached.then_some(x);
+    // The global search (module `hermite_search`) when the continuation's curve is refused.
+    let near = [s.ln(), (tri.turn / std::f64::consts::PI).powi(2)];
+    let searched = std::iter::once_with(|| {
+        Reduced::new(degree, system.chord, system.end_tangent, t0, t1s)
+            .map_or_else(Vec::new, |r| r.seeds(near))
+    })
+    .flatten();
+    // Back to the world frame: M_world = R M Rᵀ with R = [e1 e2], first leg L·|chord|·e1.
+    let rot = Matrix2::new(e1.x(), e2.x(), e1.y(), e2.y());
+    let mut refusal = None;
+    for seed in continued.into_iter().chain(searched) {
+        // A seed of the search already meets the equations to about 1e-12; where rounding
+        // keeps Newton from improving it further, it goes to the checks as it is.
+        let polished = system.newton(seed, t0, t1s).or_else(|| {
+            system
+                .residual(&seed, t0, t1s)
+                .filter(|(r, _)| r.iter().all(|v| v.abs() <= SEED_TOLERANCE))
+                .map(|_| seed)
+        });
+        let Some(x) = polished else {
+            continue;
+        };
+        let m = rot * Matrix2::new(x[1], x[2], x[3], x[4]) * rot.transpose();
+        let checked = ClassACurve::new(&start.point, &(e1 * (x[0] * tri.chord)), &m, degree)
+            .and_then(|curve| {
+                verify(&curve, start, end, tri.turn, k0, k1)?;
+                let cert = curvature_certificate(curve.as_bezier())?;
+                if cert.is_monotone() {
+                    Ok(curve)
+                } else {
+                    Err(ClassAError::CurvatureNotMonotone {
+                        verdict: cert.verdict,
+                    })
+                }
+            });
+        match checked {
+            Ok(curve) => return Ok(curve),
+            // A solution whose curvature is not monotone says more than one off by rounding.
+            Err(e) => {
+                if !matches!(refusal, Some(ClassAError::CurvatureNotMonotone { .. })) {
+                    refusal = Some(e);
                 }
             }
         }
     }
-    if tau < 1.0 {
-        let r = system
-            .residual(&x, t0, t1s)
-            .map_or(f64::INFINITY, |(r, _)| {
-                r.iter().fold(0.0f64, |a, v| a.max(v.abs()))
-            });
-        return Err(no_convergence(r));
-    }
-    // Back to the world frame: M_world = R M Rᵀ with R = [e1 e2], first leg L·|chord|·e1.
-    let rot = Matrix2::new(e1.x(), e2.x(), e1.y(), e2.y());
-    let m = rot * Matrix2::new(x[1], x[2], x[3], x[4]) * rot.transpose();
-    let curve = ClassACurve::new(&start.point, &(e1 * (x[0] * tri.chord)), &m, degree)?;
-    verify(&curve, start, end, tri.turn, k0, k1)?;
-    Ok(curve)
+    Err(refusal.unwrap_or_else(|| {
+        no_convergence(
+            system
+                .residual(&x, t0, t1s)
+                .map_or(f64::INFINITY, |(r, _)| max_norm(&r)),
+        )
+    }))
 }
 
 /// The checks of [`hermite_planar`] on the rounded control points.
@@ -457,23 +475,8 @@ fn verify(
         }
         total += a;
     }
-    if (total - turn).abs() > INTERPOLATION_TOLERANCE {
-        return Err(ClassAError::ToleranceNotMet {
-            condition: "total turn",
-            achieved: (total - turn).abs(),
-            tolerance: INTERPOLATION_TOLERANCE,
-        });
-    }
+    within_tolerance("total turn", (total - turn).abs())?;
     let (c0, c1) = end_curvatures(bezier)?;
-    for (condition, got, want) in [("start curvature", c0, k0), ("end curvature", c1, k1)] {
-        let achieved = (got / want - 1.0).abs();
-        if achieved.is_nan() || achieved > INTERPOLATION_TOLERANCE {
-            return Err(ClassAError::ToleranceNotMet {
-                condition,
-                achieved,
-                tolerance: INTERPOLATION_TOLERANCE,
-            });
-        }
-    }
+    check_end_curvatures([c0, c1], [k0, k1])?;
     Ok(())
 }

@@ -10,6 +10,10 @@
 
 use bez_core::{BezierForm, Vector, Vector3};
 
+use crate::continuation::{
+    NEWTON_ITERATIONS, NEWTON_TOLERANCE, backtrack, check_end_curvatures, continuation, max_norm,
+    within_tolerance,
+};
 use crate::square::{Matrix, Matrix3};
 use crate::{
     ClassACurve, ClassAError, INTERPOLATION_TOLERANCE, Interpolation, SpatialRequirement,
@@ -253,15 +257,6 @@ pub fn hermite_spatial(
     Ok(curve)
 }
 
-/// Residual tolerance of the Newton iteration (chord 1, curvatures divided by their targets,
-/// tangent and binormal conditions as sines of angles).
-const NEWTON_TOLERANCE: f64 = 1e-13;
-/// Newton iterations per continuation step.
-const NEWTON_ITERATIONS: usize = 16;
-/// Smallest continuation step before giving up.
-const MIN_STEP: f64 = 1.0 / 1024.0;
-/// Most continuation steps tried (accepted or halved).
-const MAX_STEPS: usize = 256;
 /// Unknowns: L and the nine entries of M (row-major).
 const UNKNOWNS: usize = 10;
 /// Equations: end point (3), end tangent (2), curvatures (2), binormals (2, zero when free).
@@ -346,7 +341,7 @@ impl System {
 
     /// Gauss–Newton with minimum-norm steps from x for the targets; Some(x) when converged.
     fn newton(&self, mut x: [f64; UNKNOWNS], t: &Targets) -> Option<[f64; UNKNOWNS]> {
-        let norm = |r: &[f64; EQUATIONS]| r.iter().fold(0.0f64, |a, v| a.max(v.abs()));
+        let norm = |r: &[f64; EQUATIONS]| max_norm(r);
         let active = [
             true,
             true,
@@ -391,20 +386,9 @@ impl System {
                 .to_array();
             let dx: [f64; UNKNOWNS] =
                 std::array::from_fn(|j| (0..EQUATIONS).map(|i| jac[i][j] * y[i]).sum());
-            let mut lambda = 1.0;
-            loop {
-                let trial: [f64; UNKNOWNS] = std::array::from_fn(|j| x[j] + lambda * dx[j]);
-                if let Some((rt, _)) = self.residual(&trial, t)
-                    && norm(&rt) < current
-                {
-                    (x, r) = (trial, rt);
-                    break;
-                }
-                lambda *= 0.5;
-                if lambda < 1e-4 {
-                    return None;
-                }
-            }
+            (x, r) = backtrack(&x, &dx, current, |trial| {
+                self.residual(trial, t).map(|(r, _)| r)
+            })?;
         }
         (norm(&r) <= NEWTON_TOLERANCE).then_some(x)
     }
@@ -485,32 +469,13 @@ fn solve_g2(
         b0: targets.b0.map(|b| turn_towards(&from.b0, &b, t0, f)),
         b1: targets.b1.map(|b| turn_towards(&from.b1, &b, t1, f)),
     };
-    let (mut done, mut step) = (0.0f64, 1.0f64);
-    for _ in 0..MAX_STEPS {
-        if done >= 1.0 {
-            break;
-        }
-        let next = (done + step).min(1.0);
-        let goal = if next >= 1.0 { *targets } else { at(next) };
-        match system.newton(x, &goal) {
-            Some(solved) => {
-                (x, done) = (solved, next);
-                step = (2.0 * step).min(1.0);
-            }
-            None => {
-                step *= 0.5;
-                if step < MIN_STEP {
-                    break;
-                }
-            }
-        }
-    }
-    if done < 1.0 {
+    let (x, reached) = continuation(x, |from, next| {
+        system.newton(from, &if next >= 1.0 { *targets } else { at(next) })
+    });
+    if !reached {
         let r = system
             .residual(&x, targets)
-            .map_or(f64::INFINITY, |(r, _)| {
-                r.iter().fold(0.0f64, |a, v| a.max(v.abs()))
-            });
+            .map_or(f64::INFINITY, |(r, _)| max_norm(&r));
         return Err(no_convergence(r));
     }
     let curve = ClassACurve::new(&a[0], &(*t0 * (x[0] * c)), &matrix(&x), degree)?;
@@ -531,19 +496,7 @@ fn verify(
     let p = curve.as_bezier().points();
     Interpolation::measure(p, &a[0], t0, t1, &a[3]).within(INTERPOLATION_TOLERANCE)?;
     let [(c0, _), (c1, _)] = end_curvatures_torsions(curve.as_bezier())?;
-    for (condition, got, want) in [
-        ("start curvature", c0 * c, targets.k0),
-        ("end curvature", c1 * c, targets.k1),
-    ] {
-        let achieved = (got / want - 1.0).abs();
-        if achieved.is_nan() || achieved > INTERPOLATION_TOLERANCE {
-            return Err(ClassAError::ToleranceNotMet {
-                condition,
-                achieved,
-                tolerance: INTERPOLATION_TOLERANCE,
-            });
-        }
-    }
+    check_end_curvatures([c0 * c, c1 * c], [targets.k0, targets.k1])?;
     let n = p.len() - 1;
     let leg = |i: usize| p[i + 1] - p[i];
     for (condition, want, got) in [
@@ -552,14 +505,7 @@ fn verify(
     ] {
         if let Some(b) = want {
             let g = got / got.norm();
-            let achieved = 2.0 * (0.5 * (g - b).norm()).min(1.0).asin();
-            if achieved.is_nan() || achieved > INTERPOLATION_TOLERANCE {
-                return Err(ClassAError::ToleranceNotMet {
-                    condition,
-                    achieved,
-                    tolerance: INTERPOLATION_TOLERANCE,
-                });
-            }
+            within_tolerance(condition, 2.0 * (0.5 * (g - b).norm()).min(1.0).asin())?;
         }
     }
     Ok(())

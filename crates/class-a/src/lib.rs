@@ -29,6 +29,7 @@
 //! ```
 
 mod certificate;
+mod continuation;
 mod curve;
 mod dd;
 mod edit;
@@ -38,6 +39,7 @@ mod exact;
 mod filter;
 mod general;
 mod hermite;
+mod hermite_search;
 mod hermite_spatial;
 mod interpolation;
 mod lcg;

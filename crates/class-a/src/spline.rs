@@ -107,41 +107,18 @@ impl ClassASpline {
             .map(|k| Knot::new(k.point, k.tangent))
             .collect();
         let g1 = Self::new(free, degree)?;
-        let ends = g1
-            .segments
-            .iter()
-            .enumerate()
-            .map(|(index, seg)| {
-                crate::end_curvatures(seg.as_bezier()).map_err(|e| ClassAError::Segment {
-                    index,
-                    source: Box::new(e),
-                })
-            })
-            .collect::<Result<Vec<_>, _>>()?;
-        let choose = |weight_left: f64| -> Vec<Knot> {
-            knots
-                .iter()
-                .enumerate()
-                .map(|(i, k)| {
-                    let left = i.checked_sub(1).map(|j| ends[j].1);
-                    let right = ends.get(i).map(|e| e.0);
-                    let estimate = match (left, right) {
-                        (Some(l), Some(r)) => weight_left * l + (1.0 - weight_left) * r,
-                        // Every knot ends or starts at least one segment.
-                        (l, r) => l.or(r).unwrap_or(0.0),
-                    };
-                    Knot::new(k.point, k.tangent).with_curvature(k.curvature.unwrap_or(estimate))
-                })
-                .collect()
-        };
-        let first = Self::new(choose(0.5), degree);
-        if first.is_ok() {
-            return first;
-        }
-        [1.0, 0.0]
-            .into_iter()
-            .find_map(|weight| Self::new(choose(weight), degree).ok())
-            .map_or(first, Ok)
+        let ends = segment_ends(&g1.segments, |seg| {
+            crate::end_curvatures(seg.as_bezier()).map(|(k0, k1)| [k0, k1])
+        })?;
+        with_joint_rules(
+            &knots,
+            &ends,
+            |left, right, weight_left| weight_left * left + (1.0 - weight_left) * right,
+            |k, estimate| {
+                Knot::new(k.point, k.tangent).with_curvature(k.curvature.unwrap_or(estimate))
+            },
+            |chosen| Self::new(chosen, degree),
+        )
     }
 
     /// The knots.
@@ -180,6 +157,63 @@ impl ClassASpline {
             .map(|s| s.as_bezier().clone())
             .collect()
     }
+}
+
+/// The one-sided values `at` (start, end) of every segment, a failure as
+/// [`ClassAError::Segment`] with its index.
+pub(crate) fn segment_ends<const D: usize, V>(
+    segments: &[ClassACurve<D>],
+    at: impl Fn(&ClassACurve<D>) -> Result<[V; 2], ClassAError>,
+) -> Result<Vec<[V; 2]>, ClassAError> {
+    segments
+        .iter()
+        .enumerate()
+        .map(|(index, seg)| {
+            at(seg).map_err(|e| ClassAError::Segment {
+                index,
+                source: Box::new(e),
+            })
+        })
+        .collect()
+}
+
+/// The rules of `with_g2_joints` (planar and spatial): with `ends[i]` the one-sided values of
+/// G1 segment i, each knot gets, where not prescribed (`build` keeps a prescribed value), its
+/// only one-sided value at an end of the spline and `mix(left, right, weight_left)` inside;
+/// the weights 1/2 (the mean), 1 (the left value) and 0 (the right one) are tried in turn, each
+/// at every knot, and the first spline that `solve` accepts is returned, else the mean's error.
+pub(crate) fn with_joint_rules<K: Clone, V: Copy, S>(
+    knots: &[K],
+    ends: &[[V; 2]],
+    mix: impl Fn(V, V, f64) -> V,
+    build: impl Fn(&K, V) -> K,
+    solve: impl Fn(Vec<K>) -> Result<S, ClassAError>,
+) -> Result<S, ClassAError> {
+    let choose = |weight_left: f64| -> Vec<K> {
+        knots
+            .iter()
+            .enumerate()
+            .map(|(i, k)| {
+                let left = i.checked_sub(1).map(|j| ends[j][1]);
+                let right = ends.get(i).map(|e| e[0]);
+                // Every knot ends or starts at least one segment (a knot with neither, which
+                // `solve` refuses anyway, would be kept as given).
+                left.zip(right)
+                    .map(|(l, r)| mix(l, r, weight_left))
+                    .or(left)
+                    .or(right)
+                    .map_or_else(|| k.clone(), |value| build(k, value))
+            })
+            .collect()
+    };
+    let first = solve(choose(0.5));
+    if first.is_ok() {
+        return first;
+    }
+    [1.0, 0.0]
+        .into_iter()
+        .find_map(|weight| solve(choose(weight)).ok())
+        .map_or(first, Ok)
 }
 
 /// The segments of a spline through `knots`, segment i solved from knots i and i + 1 by

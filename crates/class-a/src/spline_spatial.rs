@@ -3,7 +3,7 @@
 
 use bez_core::{BezierCurve, BezierForm, Vector3};
 
-use crate::spline::{eval_segments, solve_segments};
+use crate::spline::{eval_segments, segment_ends, solve_segments, with_joint_rules};
 use crate::{ClassACurve, ClassAError, SpatialKnot, hermite_spatial};
 
 /// A spatial curve of several Class A segments: segment i runs from knot i to knot i + 1 with
@@ -120,46 +120,23 @@ impl SpatialClassASpline {
             .map(|k| SpatialKnot::new(k.point, k.tangent))
             .collect();
         let g1 = Self::new(free, degree)?;
-        let ends = g1
-            .segments
-            .iter()
-            .enumerate()
-            .map(|(index, seg)| {
-                one_sided(seg).map_err(|e| ClassAError::Segment {
-                    index,
-                    source: Box::new(e),
-                })
-            })
-            .collect::<Result<Vec<_>, _>>()?;
-        let choose = |weight_left: f64| -> Vec<SpatialKnot> {
-            knots
-                .iter()
-                .enumerate()
-                .map(|(i, k)| {
-                    let left = i.checked_sub(1).map(|j| ends[j][1]);
-                    let right = ends.get(i).map(|e| e[0]);
-                    let (curvature, binormal) = match (left, right) {
-                        (Some(l), Some(r)) => (
-                            weight_left * l.0 + (1.0 - weight_left) * r.0,
-                            l.1 * weight_left + r.1 * (1.0 - weight_left),
-                        ),
-                        // Every knot ends or starts at least one segment.
-                        (l, r) => l.or(r).unwrap_or((0.0, Vector3::zeros())),
-                    };
-                    SpatialKnot::new(k.point, k.tangent)
-                        .with_curvature(k.curvature.unwrap_or(curvature))
-                        .with_binormal(k.binormal.unwrap_or(binormal))
-                })
-                .collect()
-        };
-        let first = Self::new(choose(0.5), degree);
-        if first.is_ok() {
-            return first;
-        }
-        [1.0, 0.0]
-            .into_iter()
-            .find_map(|weight| Self::new(choose(weight), degree).ok())
-            .map_or(first, Ok)
+        let ends = segment_ends(&g1.segments, one_sided)?;
+        with_joint_rules(
+            &knots,
+            &ends,
+            |left: (f64, Vector3), right: (f64, Vector3), weight_left| {
+                (
+                    weight_left * left.0 + (1.0 - weight_left) * right.0,
+                    left.1 * weight_left + right.1 * (1.0 - weight_left),
+                )
+            },
+            |k, (curvature, binormal)| {
+                SpatialKnot::new(k.point, k.tangent)
+                    .with_curvature(k.curvature.unwrap_or(curvature))
+                    .with_binormal(k.binormal.unwrap_or(binormal))
+            },
+            |chosen| Self::new(chosen, degree),
+        )
     }
 
     /// The knots.

@@ -13,6 +13,10 @@ use class_a::{
     curvature_certificate, end_curvatures_torsions, hermite_spatial, rotation, torsion_certificate,
 };
 use proptest::prelude::*;
+
+#[path = "common/spatial_g2.rs"]
+mod spatial_g2;
+use spatial_g2::spiral_knots;
 use std::f64::consts::{FRAC_PI_2, PI, TAU};
 
 /// A unit vector from spherical angles.
@@ -360,34 +364,6 @@ proptest! {
             }
         }
     }
-}
-
-/// Knots on the conical spiral e^{ct}(cos t, sin t, h) every 1.1 rad, c = 0.4, h = 0.8, with
-/// its tangents, and (with `g2`) its curvature and binormal from its analytic derivatives.
-fn spiral_knots(count: usize, g2: bool) -> Vec<SpatialKnot> {
-    let (c, h) = (0.4f64, 0.8f64);
-    (0..count)
-        .map(|i| {
-            let t = 1.1 * i as f64;
-            let (sn, cs) = t.sin_cos();
-            let e = (c * t).exp();
-            let d1 = Vector3::new(c * cs - sn, c * sn + cs, c * h) * e;
-            let d2 = Vector3::new(
-                (c * c - 1.0) * cs - 2.0 * c * sn,
-                (c * c - 1.0) * sn + 2.0 * c * cs,
-                c * c * h,
-            ) * e;
-            let knot = SpatialKnot::new(Vector3::new(cs, sn, h) * e, d1);
-            if g2 {
-                let b = d1.cross(&d2);
-                let n1 = d1.norm();
-                knot.with_curvature(b.norm() / (n1 * n1 * n1))
-                    .with_binormal(b)
-            } else {
-                knot
-            }
-        })
-        .collect()
 }
 
 #[test]

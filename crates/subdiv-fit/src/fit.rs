@@ -116,7 +116,12 @@ pub enum Reduction {
     /// points beyond its initial count sends the contour through the insertion loop (in
     /// [`FitOptions::mode`]) and then the same re-spacing and removal. Otherwise round 0 of the
     /// reports is the span fit. On the printable ASCII glyphs of DejaVu Sans at 10⁻³ em: 1,795
-    /// control points (TrueType stores 1,797) in about 1.5 ms per glyph.
+    /// control points (TrueType stores 1,797) in about 1.5 ms per glyph. With
+    /// [`FitOptions::corner_tolerance`] each trial puts the free neighbours of the span's corners
+    /// on the data's tangents (one-sided quadratic estimates) and refits the other points around
+    /// them, and a span is accepted only when its side of each end corner is within half the
+    /// bound; on the same glyphs with 0.5°: 1,905 control points in about 3.2 ms per glyph, every
+    /// kept corner within 0.38° of the outline's turn (9.29° without the bound).
     Refit,
 }
 
@@ -963,7 +968,7 @@ pub(crate) fn solve_curve<const D: usize>(
     match options.mode {
         FitMode::Interpolate => Ok(if options.corner_tolerance.is_some() {
             let max_move = 0.25 * options.tolerance;
-            neighbours_on_tangents(data, fitting, &curve, closed, options, max_move)
+            neighbours_on_tangents(data, fitting, &curve, closed, options, max_move, |_| true)
                 .map_or(curve, |c| c.0)
         } else {
             curve
@@ -982,8 +987,15 @@ pub(crate) fn solve_curve<const D: usize>(
             // A corner's tangents are the polygon edges to its neighbours: with the corner bound,
             // those move onto the data's tangents and the others are solved again around them.
             if options.corner_tolerance.is_some()
-                && let Some((on_tangents, moved)) =
-                    neighbours_on_tangents(data, fitting, &c, closed, options, f64::INFINITY)
+                && let Some((on_tangents, moved)) = neighbours_on_tangents(
+                    data,
+                    fitting,
+                    &c,
+                    closed,
+                    options,
+                    f64::INFINITY,
+                    |_| true,
+                )
                 && let Ok(next) = least_squares(data, fitting, &on_tangents, &moved)
             {
                 c = next;

@@ -18,7 +18,7 @@ use bez_core::Vector;
 use crate::SubdivCurve;
 use crate::assess::{Measured, assess_segment};
 use crate::chord::ChordLengths;
-use crate::corner_angles::corner_turns_kept;
+use crate::corner_angles::{corner_turns_kept, neighbours_on_tangents, span_sides_kept};
 use crate::fit::{FitMode, FitOptions, Reduction, solve_curve};
 use crate::insertion::segment_range;
 use crate::refit::refit;
@@ -410,6 +410,9 @@ pub(crate) fn fit_spans<const D: usize>(
                     }
                     let next =
                         respaced_refit(data, &trial, &fitting, &curve, closed, options, inside)?;
+                    if !span_sides_kept(data, &trial, &next, closed, options, span) {
+                        return None;
+                    }
                     let segs = next.segment_count();
                     let span_segments = (0..segs).filter(|&s| {
                         let start = trial[s].0;
@@ -558,7 +561,19 @@ fn respaced_refit<const D: usize>(
         free.rotate_left(cut);
     }
     let guess = SubdivCurve::new(points, interp.kinds().to_vec(), curve.closure()).ok()?;
-    refit(data, trial, guess, &free)
+    let fitted = refit(data, trial, guess, &free)?;
+    // With a corner bound, the free neighbours of the corners go onto the data's tangents and the
+    // other free points are refitted around them (the corner's turn is its polygon's turn).
+    if options.corner_tolerance.is_some()
+        && let Some((placed, moved)) =
+            neighbours_on_tangents(data, trial, &fitted, closed, options, f64::INFINITY, |v| {
+                free.contains(&v)
+            })
+    {
+        let rest: Vec<usize> = free.iter().copied().filter(|&v| !moved[v]).collect();
+        return refit(data, trial, placed, &rest);
+    }
+    Some(fitted)
 }
 
 #[cfg(test)]

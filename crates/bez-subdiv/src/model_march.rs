@@ -16,6 +16,9 @@
 //! the curve too. (Before, the points sent were B(tᵢ) by Horner's rule, each within r of the
 //! models' point, and the test was e + 2r ≤ tol.)
 //!
+//! A chord within one model takes a root-free upper bound on its offset instead of the exact
+//! extremes ([`offset_bound`], within 0.4 % of them); one across models the exact extremes.
+//!
 //! Cost: a point is O(1) (a point of a model), every try O(1) per model it spans, every model
 //! two O(n) evaluations (B and B′ at its end), and every block of about 16 models one O(n²) de
 //! Casteljau split.
@@ -165,6 +168,11 @@ impl<J: Fn(f64) -> (Vector2, Vector2)> Window<'_, J> {
     /// distance between arc and chord when the projection stays inside. (The cubics are taken
     /// along d, |d| times these, and divided by |d| once.) Then add maxₖ rₖ (the
     /// curve is within r of the models' arc, and the chord's ends are the models' points).
+    ///
+    /// A chord within one model (about two thirds of the tries at 1e-5 × size) whose
+    /// projection is monotone takes the root-free upper bound of [`offset_bound`] instead of
+    /// the exact extremes (within 0.4 % of them): no square root and one division less per
+    /// try.
     fn bound(&self, ta: f64, pa: Vector2, tb: f64) -> (f64, Vector2) {
         let mut k = 0;
         while k + 1 < self.len && self.get(k).t1 < tb {

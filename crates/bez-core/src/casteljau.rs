@@ -103,10 +103,13 @@ pub fn de_casteljau_split<T: ControlPoint>(
     let s = 1.0 - t;
     left[0] = right[0];
     for (r, l) in left.iter_mut().enumerate().skip(1) {
-        for i in 0..=n - r {
-            right[i] = right[i] * s + right[i + 1] * t;
+        // Row r: Pᵢʳ for i = 0..=n − r from the n − r + 2 points of row r − 1 (a half-open range
+        // over a slice of known length, so the loop has no bounds checks).
+        let row = &mut right[..n + 2 - r];
+        for i in 0..row.len() - 1 {
+            row[i] = row[i] * s + row[i + 1] * t;
         }
-        *l = right[0];
+        *l = row[0];
     }
     // `right[i]` now holds Pᵢⁿ⁻ⁱ, which is exactly the right piece in order.
     Ok(())

@@ -70,7 +70,7 @@ fn close_to_n_star_or_one_more_than_its_ceiling_on_degrees_2_to_30() {
 
 /// Above degree 3 (the march on cubic models), 40 seeded random curves per degree at
 /// 1e-3 × size: median ≤ 1.10 N* and every curve ≤ 1.25 N* (measured medians 1.071–1.086,
-/// 90th percentiles 1.105–1.132, maxima 1.117–1.164).
+/// 90th percentiles 1.102–1.129, maxima 1.117–1.164).
 #[test]
 fn counts_above_degree_3_on_random_curves() {
     for degree in [4, 5, 8, 12, 17, 25, 30] {

@@ -17,12 +17,12 @@ pub const MAX_WANG_SEGMENTS: usize = 1 << 24;
 /// take two square roots (amortized over more than 64 points), see [`UniformCount::new`].
 const TABLE_COUNTS: usize = 64;
 
-/// i⁴ for i = 0..[`TABLE_COUNTS`] + 4, exact in f64, except entry 0, −1 (every q ≥ 0 is above
-/// it: the count is at least 1).
-const FOURTH_POWERS: [f64; TABLE_COUNTS + 4] = {
-    let mut table = [-1.0; TABLE_COUNTS + 4];
+/// i⁴ for i = 0..=[`TABLE_COUNTS`] + 1, exact in f64, except entry 0, −1 (every q ≥ 0 is
+/// above it: the count is at least 1).
+const FOURTH_POWERS: [f64; TABLE_COUNTS + 2] = {
+    let mut table = [-1.0; TABLE_COUNTS + 2];
     let mut i = 1;
-    while i < TABLE_COUNTS + 4 {
+    while i < TABLE_COUNTS + 2 {
         let k = i as f64;
         table[i] = k * k * k * k;
         i += 1;
@@ -93,35 +93,54 @@ const FIRST_COUNTS: [u8; BUCKETS] = {
     table
 };
 
+/// For each bucket m of [`first_guess`], b⁴ and (b + 1)⁴ with b = [`FIRST_COUNTS`]`[m]`: the
+/// two fourth powers [`count_from_fourth_power`] compares q with, read in the same step as b.
+const BUCKET_POWERS: [[f64; 2]; BUCKETS] = {
+    let mut table = [[0.0; 2]; BUCKETS];
+    let mut m = 0;
+    while m < BUCKETS {
+        let b = FIRST_COUNTS[m] as usize;
+        table[m] = [FOURTH_POWERS[b], FOURTH_POWERS[b + 1]];
+        m += 1;
+    }
+    table
+};
+
 /// The smallest i ≥ 1 with q ≤ i⁴, for 0 ≤ q ≤ [`TABLE_COUNTS`]⁴, without a search or a
 /// data-dependent branch: a first guess b from the bits of q ([`first_guess`]), then b plus
-/// the number of i⁴ among b⁴, …, (b + 3)⁴ that q exceeds ([`FOURTH_POWERS`]), which is the
-/// count whenever b ≤ count ≤ b + 4. That holds on all of [0, [`TABLE_COUNTS`]⁴]: b is a
-/// non-decreasing function of q (the bits of a non-negative f64 grow with it, and the table
-/// grows), so on each interval ((i − 1)⁴, i⁴] of count i it is enough that b ≤ i at its top
-/// and b ≥ i − 4 just above its bottom, which a test checks for every i.
+/// the number of b⁴ and (b + 1)⁴ that q exceeds (both read from [`BUCKET_POWERS`] beside b,
+/// not after it), which is the count whenever b ≤ count ≤ b + 2. That holds on all of
+/// [0, [`TABLE_COUNTS`]⁴]: b is a non-decreasing function of q (the bits of a non-negative f64
+/// grow with it, and the table grows), so on each interval ((i − 1)⁴, i⁴] of count i it is
+/// enough that b ≤ i at its top and b ≥ i − 2 just above its bottom, which a test checks for
+/// every i.
 #[inline(always)]
 fn count_from_fourth_power(q: f64) -> usize {
-    let base = first_guess(q);
-    base + (0..4)
-        .map(|j| usize::from(q > FOURTH_POWERS[base + j]))
-        .sum::<usize>()
+    let m = bucket(q);
+    let [low, high] = BUCKET_POWERS[m];
+    usize::from(FIRST_COUNTS[m]) + usize::from(q > low) + usize::from(q > high)
 }
 
-/// The count of the smallest q of q's bucket ([`FIRST_COUNTS`]): the bucket is the biased
-/// binary exponent of q times eight plus the three leading bits of its mantissa, counted from
-/// q = 1 (below 1, the first bucket, count 1). Integer operations and one table read.
+/// The bucket of q: its biased binary exponent times eight plus the three leading bits of its
+/// mantissa, counted from q = 1 (below 1, the first bucket), at most the last. Integer
+/// operations only.
 #[inline(always)]
-fn first_guess(q: f64) -> usize {
+fn bucket(q: f64) -> usize {
     // The bits of a non-negative f64 shifted right by 49: 8 × biased exponent + three bits.
     #[allow(
         clippy::cast_possible_truncation,
         reason = "a 15-bit value after the shift"
     )]
-    let bucket = ((q.to_bits() >> 49) as usize)
+    let m = ((q.to_bits() >> 49) as usize)
         .saturating_sub(8 * 1023)
         .min(BUCKETS - 1);
-    usize::from(FIRST_COUNTS[bucket]).min(TABLE_COUNTS)
+    m
+}
+
+/// The count of the smallest q of q's bucket ([`FIRST_COUNTS`]; below 1, count 1).
+#[cfg(test)]
+fn first_guess(q: f64) -> usize {
+    usize::from(FIRST_COUNTS[bucket(q)])
 }
 
 /// 2^±128: [`flatten_wang_small`] runs where the largest coordinate is surely within the range
@@ -577,7 +596,7 @@ mod tests {
         Some(n)
     }
 
-    /// The first guess of `count_from_fourth_power` is within [i − 4, i] at both ends of the
+    /// The first guess of `count_from_fourth_power` is within [i − 2, i] at both ends of the
     /// interval ((i − 1)⁴, i⁴] of every count i (so everywhere, by its monotonicity), and the
     /// count is the smallest i with q ≤ i⁴ on a dense sweep of [0, 64⁴].
     #[test]
@@ -590,7 +609,7 @@ mod tests {
                 ((i - 1) as f64).powi(4).next_up()
             };
             assert!(first_guess(top) <= i, "{i}");
-            assert!(first_guess(bottom) + 4 >= i, "{i}");
+            assert!(first_guess(bottom) + 2 >= i, "{i}");
             assert_eq!(count_from_fourth_power(top), i);
             assert_eq!(count_from_fourth_power(bottom), i);
         }

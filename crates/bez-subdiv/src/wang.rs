@@ -17,12 +17,12 @@ pub const MAX_WANG_SEGMENTS: usize = 1 << 24;
 /// take two square roots (amortized over more than 64 points), see [`UniformCount::new`].
 const TABLE_COUNTS: usize = 64;
 
-/// i⁴ for i = 0..=[`TABLE_COUNTS`] + 1, exact in f64, except entry 0, −1 (every q ≥ 0 is
+/// i⁴ for i = 0..=[`TABLE_COUNTS`] + 2, exact in f64, except entry 0, −1 (every q ≥ 0 is
 /// above it: the count is at least 1).
-const FOURTH_POWERS: [f64; TABLE_COUNTS + 2] = {
-    let mut table = [-1.0; TABLE_COUNTS + 2];
+const FOURTH_POWERS: [f64; TABLE_COUNTS + 3] = {
+    let mut table = [-1.0; TABLE_COUNTS + 3];
     let mut i = 1;
-    while i < TABLE_COUNTS + 2 {
+    while i < TABLE_COUNTS + 3 {
         let k = i as f64;
         table[i] = k * k * k * k;
         i += 1;
@@ -44,29 +44,44 @@ const STEPS: [Step; TABLE_COUNTS + 1] = {
     table
 };
 
-/// 1 + 2⁻⁴⁶: the factor by which [`table_count`] enlarges the computed fourth power of Wang's
-/// count before comparing it with the table (see there).
+/// 1 + 2⁻⁴⁶: the factor by which the square-root path of [`UniformCount::new`] and its test
+/// for forward differences enlarge the computed fourth power of Wang's count.
 const ROUND_UP: f64 = 1.0 + 1.0 / (1_u64 << 46) as f64;
 
+/// fl(i⁴ − i⁴ 2⁻⁴⁵) for i = 0..=[`TABLE_COUNTS`] + 2 (entry 0, −1: every q ≥ 0 is above it):
+/// the largest computed fourth power q that [`table_count`] gives the count i, each below i⁴ by
+/// a relative 2⁻⁴⁵ up to one rounding (see there). Comparing q with these instead of
+/// enlarging q first takes one multiplication off the way to the first point.
+const COUNT_BOUNDS: [f64; TABLE_COUNTS + 3] = {
+    let mut table = [-1.0; TABLE_COUNTS + 3];
+    let mut i = 1;
+    while i < TABLE_COUNTS + 3 {
+        table[i] = FOURTH_POWERS[i] - FOURTH_POWERS[i] / (1_u64 << 45) as f64;
+        i += 1;
+    }
+    table
+};
+
 /// Wang's count N = max(1, ⌈q^¼⌉) from `q`, its fourth power as computed, without a square
-/// root: [`count_from_fourth_power`] of q (1 + 2⁻⁴⁶). `None` when that is above
-/// [`TABLE_COUNTS`] or `q` is not a number.
+/// root: [`count_from_fourth_power`] of q, the smallest i ≥ 1 with q ≤ [`COUNT_BOUNDS`]`[i]`.
+/// `None` when that is above [`TABLE_COUNTS`] or `q` is not a number.
 ///
 /// Conservative, so the guarantee of Wang's count holds: let Q = (c |d| / tol)² be the exact
 /// fourth power for the second difference d as computed (c = n(n − 1)/8). The caller computes
 /// q = fl(‖fl(d · fl(c / tol))‖²) in six rounding steps at most (the quotient, one product per
 /// coordinate, one square each and their sum; for a cubic the larger of two such sums), each
-/// within a relative 2⁻⁵³ while no step underflows, so q ≥ Q (1 − 2⁻⁵⁰). The product with
-/// 1 + 2⁻⁴⁶ rounds within another 2⁻⁵³, and (1 − 2⁻⁵⁰)(1 + 2⁻⁴⁶)(1 − 2⁻⁵³) > 1: the enlarged q
-/// is above Q, so the count i found has i⁴ ≥ Q, i ≥ ⌈Q^¼⌉. Underflow only adds an absolute
-/// error below 2⁻⁹⁰⁰ to a Q itself below 1, where every count i ≥ 1 is enough. The count
-/// therefore never rounds down; it is one above the square-root formula ([`wang_count`],
-/// ⌈√(c |d| / tol)⌉) only when that formula's unrounded value lies within about 2⁻⁴⁸ of a whole
-/// number (tested, with exact integer arithmetic as the oracle).
+/// within a relative 2⁻⁵³ while no step underflows, so q ≥ Q (1 − 2⁻⁵⁰). The bound of count i
+/// is i⁴ (1 − 2⁻⁴⁵) rounded once (i⁴ 2⁻⁴⁵ is exact), so at most i⁴ (1 − 2⁻⁴⁵)(1 + 2⁻⁵³), and
+/// q ≤ that gives Q ≤ i⁴ (1 − 2⁻⁴⁵)(1 + 2⁻⁵³) / (1 − 2⁻⁵⁰) < i⁴: the count i found has
+/// i ≥ ⌈Q^¼⌉. Underflow only adds an absolute error below 2⁻⁹⁰⁰ to a Q itself below 1, where
+/// every count i ≥ 1 is enough. The count therefore never rounds down; it is one above the
+/// square-root formula ([`wang_count`], ⌈√(c |d| / tol)⌉) only when that formula's unrounded
+/// value lies within about 2⁻⁴⁶ of a whole number (tested, with exact integer arithmetic as the
+/// oracle).
 #[inline(always)]
 pub(crate) fn table_count(q: f64) -> Option<usize> {
-    let q = q.abs() * ROUND_UP;
-    if q.is_nan() || q > FOURTH_POWERS[TABLE_COUNTS] {
+    let q = q.abs();
+    if q.is_nan() || q > COUNT_BOUNDS[TABLE_COUNTS] {
         return None;
     }
     Some(count_from_fourth_power(q))
@@ -77,14 +92,20 @@ pub(crate) fn table_count(q: f64) -> Option<usize> {
 const BUCKETS: usize = 193;
 
 /// For each bucket m of [`first_guess`], the count of its smallest q,
-/// L = 2^⌊m/8⌋ (1 + (m mod 8)/8): the smallest i ≥ 1 with L ≤ i⁴ (exact in f64).
+/// L = 2^⌊m/8⌋ (1 + (m mod 8)/8), L = 0 for bucket 0 (which holds every q below 1 too): the
+/// smallest i ≥ 1 with L ≤ [`COUNT_BOUNDS`]`[i]`.
 const FIRST_COUNTS: [u8; BUCKETS] = {
     let mut table = [0; BUCKETS];
     let mut m = 0;
     while m < BUCKETS {
-        let low = (1_u64 << (m / 8)) as f64 * (1.0 + (m % 8) as f64 / 8.0);
+        // Bucket 0 also holds every q below 1.
+        let low = if m == 0 {
+            0.0
+        } else {
+            (1_u64 << (m / 8)) as f64 * (1.0 + (m % 8) as f64 / 8.0)
+        };
         let mut i = 1;
-        while FOURTH_POWERS[i] < low {
+        while COUNT_BOUNDS[i] < low {
             i += 1;
         }
         table[m] = i as u8;
@@ -93,27 +114,27 @@ const FIRST_COUNTS: [u8; BUCKETS] = {
     table
 };
 
-/// For each bucket m of [`first_guess`], b⁴ and (b + 1)⁴ with b = [`FIRST_COUNTS`]`[m]`: the
-/// two fourth powers [`count_from_fourth_power`] compares q with, read in the same step as b.
+/// For each bucket m of [`first_guess`], the bounds ([`COUNT_BOUNDS`]) of the counts b and
+/// b + 1, b = [`FIRST_COUNTS`]`[m]`: what [`count_from_fourth_power`] compares q with, read in
+/// the same step as b.
 const BUCKET_POWERS: [[f64; 2]; BUCKETS] = {
     let mut table = [[0.0; 2]; BUCKETS];
     let mut m = 0;
     while m < BUCKETS {
         let b = FIRST_COUNTS[m] as usize;
-        table[m] = [FOURTH_POWERS[b], FOURTH_POWERS[b + 1]];
+        table[m] = [COUNT_BOUNDS[b], COUNT_BOUNDS[b + 1]];
         m += 1;
     }
     table
 };
 
-/// The smallest i ≥ 1 with q ≤ i⁴, for 0 ≤ q ≤ [`TABLE_COUNTS`]⁴, without a search or a
+/// The smallest i ≥ 1 with q ≤ Cᵢ ([`COUNT_BOUNDS`]), for 0 ≤ q ≤ C₆₄, without a search or a
 /// data-dependent branch: a first guess b from the bits of q ([`first_guess`]), then b plus
-/// the number of b⁴ and (b + 1)⁴ that q exceeds (both read from [`BUCKET_POWERS`] beside b,
+/// the number of C_b and C_b+1 that q exceeds (both read from [`BUCKET_POWERS`] beside b,
 /// not after it), which is the count whenever b ≤ count ≤ b + 2. That holds on all of
-/// [0, [`TABLE_COUNTS`]⁴]: b is a non-decreasing function of q (the bits of a non-negative f64
-/// grow with it, and the table grows), so on each interval ((i − 1)⁴, i⁴] of count i it is
-/// enough that b ≤ i at its top and b ≥ i − 2 just above its bottom, which a test checks for
-/// every i.
+/// [0, C₆₄]: b is a non-decreasing function of q (the bits of a non-negative f64 grow with it,
+/// and the table grows), so on each interval (Cᵢ₋₁, Cᵢ] of count i it is enough that b ≤ i at
+/// its top and b ≥ i − 2 just above its bottom, which a test checks for every i.
 #[inline(always)]
 fn count_from_fourth_power(q: f64) -> usize {
     let m = bucket(q);
@@ -602,23 +623,25 @@ mod tests {
     #[test]
     fn count_from_fourth_power_is_exact_on_its_range() {
         for i in 1..=TABLE_COUNTS {
-            let top = (i as f64).powi(4);
+            let top = COUNT_BOUNDS[i];
             let bottom = if i == 1 {
                 0.0
             } else {
-                ((i - 1) as f64).powi(4).next_up()
+                COUNT_BOUNDS[i - 1].next_up()
             };
+            // Below i⁴ by a relative 2⁻⁴⁵ up to one rounding.
+            let exact = (i as f64).powi(4);
+            assert!(
+                top < exact && top >= exact * (1.0 - 2.0 * 2f64.powi(-45)),
+                "{i}"
+            );
             assert!(first_guess(top) <= i, "{i}");
             assert!(first_guess(bottom) + 2 >= i, "{i}");
             assert_eq!(count_from_fourth_power(top), i);
             assert_eq!(count_from_fourth_power(bottom), i);
         }
-        let naive = |q: f64| {
-            (1..)
-                .find(|&i: &usize| q <= (i as f64).powi(4))
-                .unwrap_or(0)
-        };
-        let limit = (TABLE_COUNTS as f64).powi(4);
+        let naive = |q: f64| (1..).find(|&i: &usize| q <= COUNT_BOUNDS[i]).unwrap_or(0);
+        let limit = COUNT_BOUNDS[TABLE_COUNTS];
         for k in 0..=200_000 {
             let q = limit * (f64::from(k) / 200_000.0).powi(4);
             assert_eq!(count_from_fourth_power(q), naive(q), "{q}");

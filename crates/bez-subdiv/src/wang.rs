@@ -80,7 +80,7 @@ const COUNT_BOUNDS: [f64; TABLE_COUNTS + 3] = {
 /// oracle).
 #[inline(always)]
 pub(crate) fn table_count(q: f64) -> Option<usize> {
-    let q = q.abs();
+    // q ≥ 0 (a sum of squares) or NaN.
     if q.is_nan() || q > COUNT_BOUNDS[TABLE_COUNTS] {
         return None;
     }
@@ -143,19 +143,18 @@ fn count_from_fourth_power(q: f64) -> usize {
 }
 
 /// The bucket of q: its biased binary exponent times eight plus the three leading bits of its
-/// mantissa, counted from q = 1 (below 1, the first bucket), at most the last. Integer
-/// operations only.
+/// mantissa, counted from q = 1 (q below 1, the first bucket), at most the last. One
+/// comparison and integer operations.
 #[inline(always)]
 fn bucket(q: f64) -> usize {
-    // The bits of a non-negative f64 shifted right by 49: 8 × biased exponent + three bits.
+    // The bits of an f64 of at least 1 shifted right by 49: 8 × biased exponent + three bits,
+    // at least 8 × 1023.
     #[allow(
         clippy::cast_possible_truncation,
         reason = "a 15-bit value after the shift"
     )]
-    let m = ((q.to_bits() >> 49) as usize)
-        .saturating_sub(8 * 1023)
-        .min(BUCKETS - 1);
-    m
+    let bits = (q.max(1.0).to_bits() >> 49) as usize;
+    bits.wrapping_sub(8 * 1023).min(BUCKETS - 1)
 }
 
 /// The count of the smallest q of q's bucket ([`FIRST_COUNTS`]; below 1, count 1).

@@ -31,9 +31,9 @@ pub enum Method {
     /// quadratics and cubics; no subdivision, no allocation; O(1) per point up to degree 3
     /// (forward differences, two or three vector additions per point, where their rounding
     /// error, at most 2⁻⁵⁰ s (N + 64) for the sum s of the absolute coordinates, fits in the
-    /// tolerance beside the chord error and below tol / 1024, which up to 32 segments is
+    /// tolerance beside the chord error and below tol / 1024, which up to 64 segments is
     /// checked as tol ≥ 2⁻²¹ s; otherwise the power form), O(n) above. At most [`MAX_WANG_SEGMENTS`](crate::MAX_WANG_SEGMENTS)
-    /// segments, checked before the first point. On quadratics and cubics needing at most 32
+    /// segments, checked before the first point. On quadratics and cubics needing at most 64
     /// segments, N is read from a table of fourth powers (no square root), above from two
     /// square roots of its fourth power; it rounds up, so it is one more than the formula where
     /// the formula's value is within a relative 2⁻⁴⁵ or so of a whole number.
@@ -151,7 +151,7 @@ impl Flattener {
         mut sink: impl FnMut(FlatPoint),
     ) -> Result<usize, SubdivError> {
         let bezier = curve.as_bezier();
-        // `Fast` on a quadratic or a cubic of usual size: no dynamic dispatch and, up to 32
+        // `Fast` on a quadratic or a cubic of usual size: no dynamic dispatch and, up to 64
         // segments, no square root before the points (`None`, nothing sent, when the general path decides).
         if let Method::Fast = self.method
             && let Some(n) = flatten_wang_small(bezier.points(), self.tolerance, &mut sink)

@@ -75,6 +75,29 @@ pub(crate) fn rounding_allowance(size: f64, segments: f64) -> f64 {
     ROUNDING_UNIT * size * (segments + ROUNDING_OFFSET)
 }
 
+/// The step h = fl(1/N) of the forward differences with its powers as the initial differences
+/// use them, fl(h²) and fl(fl(h²) h) (module docs): computed by [`Step::new`] at run time or,
+/// the same values, read from a table built with it.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub(crate) struct Step {
+    /// h.
+    pub(crate) h: f64,
+    /// fl(h²).
+    pub(crate) h2: f64,
+    /// fl(fl(h²) h).
+    pub(crate) h3: f64,
+}
+
+impl Step {
+    /// The powers of `h`, rounded as in the module docs (also at compile time: the same
+    /// correctly rounded products).
+    #[inline(always)]
+    pub(crate) const fn new(h: f64) -> Self {
+        let h2 = h * h;
+        Self { h, h2, h3: h2 * h }
+    }
+}
+
 /// Sends P₀ = `p0`, the points B(k h), k = 1..n, of B(t) = P₀ + a t + d t² by forward
 /// differences (two vector additions per point), and `last` = P₂ to `sink`; returns n. The
 /// points are within [`rounding_allowance`] of the curve; the parameters sent are fl(k h), as
@@ -84,11 +107,11 @@ pub(crate) fn quadratic(
     [p0, a, d]: [Vector2; 3],
     last: Vector2,
     n: usize,
-    h: f64,
+    Step { h, h2, .. }: Step,
     mut sink: impl FnMut(FlatPoint),
 ) -> usize {
     // Δ₁ = B(h) − B(0) = a h + d h², Δ₂ = 2 d h².
-    let dh = d * (h * h);
+    let dh = d * h2;
     let mut d1 = a * h + dh;
     let d2 = dh * 2.0;
     let mut p = p0;
@@ -114,12 +137,11 @@ pub(crate) fn cubic(
     [p0, a, b, c]: [Vector2; 4],
     last: Vector2,
     n: usize,
-    h: f64,
+    Step { h, h2, h3 }: Step,
     mut sink: impl FnMut(FlatPoint),
 ) -> usize {
     // Δ₃ = 6 c h³, Δ₂ = 2 b h² + 6 c h³, Δ₁ = a h + b h² + c h³.
-    let h2 = h * h;
-    let (bh2, ch3) = (b * h2, c * (h2 * h));
+    let (bh2, ch3) = (b * h2, c * h3);
     let d3 = ch3 * 6.0;
     let mut d2 = bh2 * 2.0 + d3;
     let mut d1 = a * h + bh2 + ch3;
@@ -214,16 +236,22 @@ mod tests {
             let (p0, last) = (points[0], points[len - 1]);
             let count = if len == 3 {
                 let d = p0 - points[1] * 2.0 + points[2];
-                quadratic([p0, (points[1] - p0) * 2.0, d], last, n, h, |p| {
-                    sent.push(p);
-                })
+                quadratic(
+                    [p0, (points[1] - p0) * 2.0, d],
+                    last,
+                    n,
+                    Step::new(h),
+                    |p| {
+                        sent.push(p);
+                    },
+                )
             } else {
                 let (d0, d1) = (
                     p0 - points[1] * 2.0 + points[2],
                     points[1] - points[2] * 2.0 + points[3],
                 );
                 let coefficients = [p0, (points[1] - p0) * 3.0, d0 * 3.0, d1 - d0];
-                cubic(coefficients, last, n, h, |p| {
+                cubic(coefficients, last, n, Step::new(h), |p| {
                     sent.push(p);
                 })
             };

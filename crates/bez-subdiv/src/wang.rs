@@ -5,7 +5,7 @@ use bez_core::{BezierForm, HornerBernstein, Vector2};
 
 use crate::bound::wang_count;
 use crate::error::SubdivError;
-use crate::forward_difference::{self, rounding_allowance};
+use crate::forward_difference::{self, Step, rounding_allowance};
 use crate::guaranteed::FlatPoint;
 use crate::stack_horner::{STACK_POINTS, StackHorner};
 
@@ -14,15 +14,15 @@ use crate::stack_horner::{STACK_POINTS, StackHorner};
 pub const MAX_WANG_SEGMENTS: usize = 1 << 24;
 
 /// The largest count that [`flatten_wang_small`] reads from [`FOURTH_POWERS`]; larger counts
-/// take two square roots (amortized over more than 32 points), see [`UniformCount::new`].
-const TABLE_COUNTS: usize = 32;
+/// take two square roots (amortized over more than 64 points), see [`UniformCount::new`].
+const TABLE_COUNTS: usize = 64;
 
-/// i⁴ for i = 0..[`TABLE_COUNTS`] + 4, exact in f64, except entry 0, −1 (every q ≥ 0 is above
-/// it: the count is at least 1).
-const FOURTH_POWERS: [f64; TABLE_COUNTS + 4] = {
-    let mut table = [-1.0; TABLE_COUNTS + 4];
+/// i⁴ for i = 0..=[`TABLE_COUNTS`] + 2, exact in f64, except entry 0, −1 (every q ≥ 0 is
+/// above it: the count is at least 1).
+const FOURTH_POWERS: [f64; TABLE_COUNTS + 3] = {
+    let mut table = [-1.0; TABLE_COUNTS + 3];
     let mut i = 1;
-    while i < TABLE_COUNTS + 4 {
+    while i < TABLE_COUNTS + 3 {
         let k = i as f64;
         table[i] = k * k * k * k;
         i += 1;
@@ -30,59 +30,82 @@ const FOURTH_POWERS: [f64; TABLE_COUNTS + 4] = {
     table
 };
 
-/// 1/i for i = 0..=[`TABLE_COUNTS`] (entry 0 unused), each the correctly rounded quotient, as
-/// `1.0 / i as f64` at run time: the parameters k/N come out bit for bit as on the general path.
-const RECIPROCALS: [f64; TABLE_COUNTS + 1] = {
-    let mut table = [0.0; TABLE_COUNTS + 1];
+/// The step h = 1/i with its powers ([`Step`]) for i = 0..=[`TABLE_COUNTS`] (entry 0 unused),
+/// each the correctly rounded value, as `Step::new(1.0 / i as f64)` at run time: the parameters
+/// k/N come out bit for bit as on the general path, and the powers of the step are ready
+/// together with it (no multiplication between the count and the first point).
+const STEPS: [Step; TABLE_COUNTS + 1] = {
+    let mut table = [Step::new(0.0); TABLE_COUNTS + 1];
     let mut i = 1;
     while i <= TABLE_COUNTS {
-        table[i] = 1.0 / i as f64;
+        table[i] = Step::new(1.0 / i as f64);
         i += 1;
     }
     table
 };
 
-/// 1 + 2⁻⁴⁶: the factor by which [`table_count`] enlarges the computed fourth power of Wang's
-/// count before comparing it with the table (see there).
+/// 1 + 2⁻⁴⁶: the factor by which the square-root path of [`UniformCount::new`] and its test
+/// for forward differences enlarge the computed fourth power of Wang's count.
 const ROUND_UP: f64 = 1.0 + 1.0 / (1_u64 << 46) as f64;
 
+/// fl(i⁴ − i⁴ 2⁻⁴⁵) for i = 0..=[`TABLE_COUNTS`] + 2 (entry 0, −1: every q ≥ 0 is above it):
+/// the largest computed fourth power q that [`table_count`] gives the count i, each below i⁴ by
+/// a relative 2⁻⁴⁵ up to one rounding (see there). Comparing q with these instead of
+/// enlarging q first takes one multiplication off the way to the first point.
+const COUNT_BOUNDS: [f64; TABLE_COUNTS + 3] = {
+    let mut table = [-1.0; TABLE_COUNTS + 3];
+    let mut i = 1;
+    while i < TABLE_COUNTS + 3 {
+        table[i] = FOURTH_POWERS[i] - FOURTH_POWERS[i] / (1_u64 << 45) as f64;
+        i += 1;
+    }
+    table
+};
+
 /// Wang's count N = max(1, ⌈q^¼⌉) from `q`, its fourth power as computed, without a square
-/// root: [`count_from_fourth_power`] of q (1 + 2⁻⁴⁶). `None` when that is above
-/// [`TABLE_COUNTS`] or `q` is not a number.
+/// root: [`count_from_fourth_power`] of q, the smallest i ≥ 1 with q ≤ [`COUNT_BOUNDS`]`[i]`.
+/// `None` when that is above [`TABLE_COUNTS`] or `q` is not a number.
 ///
 /// Conservative, so the guarantee of Wang's count holds: let Q = (c |d| / tol)² be the exact
 /// fourth power for the second difference d as computed (c = n(n − 1)/8). The caller computes
 /// q = fl(‖fl(d · fl(c / tol))‖²) in six rounding steps at most (the quotient, one product per
 /// coordinate, one square each and their sum; for a cubic the larger of two such sums), each
-/// within a relative 2⁻⁵³ while no step underflows, so q ≥ Q (1 − 2⁻⁵⁰). The product with
-/// 1 + 2⁻⁴⁶ rounds within another 2⁻⁵³, and (1 − 2⁻⁵⁰)(1 + 2⁻⁴⁶)(1 − 2⁻⁵³) > 1: the enlarged q
-/// is above Q, so the count i found has i⁴ ≥ Q, i ≥ ⌈Q^¼⌉. Underflow only adds an absolute
-/// error below 2⁻⁹⁰⁰ to a Q itself below 1, where every count i ≥ 1 is enough. The count
-/// therefore never rounds down; it is one above the square-root formula ([`wang_count`],
-/// ⌈√(c |d| / tol)⌉) only when that formula's unrounded value lies within about 2⁻⁴⁸ of a whole
-/// number (tested, with exact integer arithmetic as the oracle).
+/// within a relative 2⁻⁵³ while no step underflows, so q ≥ Q (1 − 2⁻⁵⁰). The bound of count i
+/// is i⁴ (1 − 2⁻⁴⁵) rounded once (i⁴ 2⁻⁴⁵ is exact), so at most i⁴ (1 − 2⁻⁴⁵)(1 + 2⁻⁵³), and
+/// q ≤ that gives Q ≤ i⁴ (1 − 2⁻⁴⁵)(1 + 2⁻⁵³) / (1 − 2⁻⁵⁰) < i⁴: the count i found has
+/// i ≥ ⌈Q^¼⌉. Underflow only adds an absolute error below 2⁻⁹⁰⁰ to a Q itself below 1, where
+/// every count i ≥ 1 is enough. The count therefore never rounds down; it is one above the
+/// square-root formula ([`wang_count`], ⌈√(c |d| / tol)⌉) only when that formula's unrounded
+/// value lies within about 2⁻⁴⁶ of a whole number (tested, with exact integer arithmetic as the
+/// oracle).
 #[inline(always)]
 pub(crate) fn table_count(q: f64) -> Option<usize> {
-    let q = q.abs() * ROUND_UP;
-    if q.is_nan() || q > FOURTH_POWERS[TABLE_COUNTS] {
+    // q ≥ 0 (a sum of squares) or NaN.
+    if q.is_nan() || q > COUNT_BOUNDS[TABLE_COUNTS] {
         return None;
     }
     Some(count_from_fourth_power(q))
 }
 
-/// The buckets of [`first_guess`]: q in [1, 2²¹) split by its binary exponent and the two
-/// leading bits of its mantissa (80 buckets up to [`TABLE_COUNTS`]⁴ = 2²⁰, one more for 2²⁰).
-const BUCKETS: usize = 81;
+/// The buckets of [`first_guess`]: q in [1, 2²⁵) split by its binary exponent and the three
+/// leading bits of its mantissa (192 buckets up to [`TABLE_COUNTS`]⁴ = 2²⁴, one more for 2²⁴).
+const BUCKETS: usize = 193;
 
 /// For each bucket m of [`first_guess`], the count of its smallest q,
-/// L = 2^⌊m/4⌋ (1 + (m mod 4)/4): the smallest i ≥ 1 with L ≤ i⁴ (exact in f64).
+/// L = 2^⌊m/8⌋ (1 + (m mod 8)/8), L = 0 for bucket 0 (which holds every q below 1 too): the
+/// smallest i ≥ 1 with L ≤ [`COUNT_BOUNDS`]`[i]`.
 const FIRST_COUNTS: [u8; BUCKETS] = {
     let mut table = [0; BUCKETS];
     let mut m = 0;
     while m < BUCKETS {
-        let low = (1_u64 << (m / 4)) as f64 * (1.0 + (m % 4) as f64 / 4.0);
+        // Bucket 0 also holds every q below 1.
+        let low = if m == 0 {
+            0.0
+        } else {
+            (1_u64 << (m / 8)) as f64 * (1.0 + (m % 8) as f64 / 8.0)
+        };
         let mut i = 1;
-        while FOURTH_POWERS[i] < low {
+        while COUNT_BOUNDS[i] < low {
             i += 1;
         }
         table[m] = i as u8;
@@ -91,35 +114,53 @@ const FIRST_COUNTS: [u8; BUCKETS] = {
     table
 };
 
-/// The smallest i ≥ 1 with q ≤ i⁴, for 0 ≤ q ≤ [`TABLE_COUNTS`]⁴, without a search or a
+/// For each bucket m of [`first_guess`], the bounds ([`COUNT_BOUNDS`]) of the counts b and
+/// b + 1, b = [`FIRST_COUNTS`]`[m]`: what [`count_from_fourth_power`] compares q with, read in
+/// the same step as b.
+const BUCKET_POWERS: [[f64; 2]; BUCKETS] = {
+    let mut table = [[0.0; 2]; BUCKETS];
+    let mut m = 0;
+    while m < BUCKETS {
+        let b = FIRST_COUNTS[m] as usize;
+        table[m] = [COUNT_BOUNDS[b], COUNT_BOUNDS[b + 1]];
+        m += 1;
+    }
+    table
+};
+
+/// The smallest i ≥ 1 with q ≤ Cᵢ ([`COUNT_BOUNDS`]), for 0 ≤ q ≤ C₆₄, without a search or a
 /// data-dependent branch: a first guess b from the bits of q ([`first_guess`]), then b plus
-/// the number of i⁴ among b⁴, …, (b + 3)⁴ that q exceeds ([`FOURTH_POWERS`]), which is the
-/// count whenever b ≤ count ≤ b + 4. That holds on all of [0, [`TABLE_COUNTS`]⁴]: b is a
-/// non-decreasing function of q (the bits of a non-negative f64 grow with it, and the table
-/// grows), so on each interval ((i − 1)⁴, i⁴] of count i it is enough that b ≤ i at its top
-/// and b ≥ i − 4 just above its bottom, which a test checks for every i.
+/// the number of C_b and C_b+1 that q exceeds (both read from [`BUCKET_POWERS`] beside b,
+/// not after it), which is the count whenever b ≤ count ≤ b + 2. That holds on all of
+/// [0, C₆₄]: b is a non-decreasing function of q (the bits of a non-negative f64 grow with it,
+/// and the table grows), so on each interval (Cᵢ₋₁, Cᵢ] of count i it is enough that b ≤ i at
+/// its top and b ≥ i − 2 just above its bottom, which a test checks for every i.
 #[inline(always)]
 fn count_from_fourth_power(q: f64) -> usize {
-    let base = first_guess(q);
-    base + (0..4)
-        .map(|j| usize::from(q > FOURTH_POWERS[base + j]))
-        .sum::<usize>()
+    let m = bucket(q);
+    let [low, high] = BUCKET_POWERS[m];
+    usize::from(FIRST_COUNTS[m]) + usize::from(q > low) + usize::from(q > high)
 }
 
-/// The count of the smallest q of q's bucket ([`FIRST_COUNTS`]): the bucket is the biased
-/// binary exponent of q times four plus the two leading bits of its mantissa, counted from
-/// q = 1 (below 1, the first bucket, count 1). Integer operations and one table read.
+/// The bucket of q: its biased binary exponent times eight plus the three leading bits of its
+/// mantissa, counted from q = 1 (q below 1, the first bucket), at most the last. One
+/// comparison and integer operations.
 #[inline(always)]
-fn first_guess(q: f64) -> usize {
-    // The bits of a non-negative f64 shifted right by 50: 4 × biased exponent + two bits.
+fn bucket(q: f64) -> usize {
+    // The bits of an f64 of at least 1 shifted right by 49: 8 × biased exponent + three bits,
+    // at least 8 × 1023.
     #[allow(
         clippy::cast_possible_truncation,
-        reason = "a 14-bit value after the shift"
+        reason = "a 15-bit value after the shift"
     )]
-    let bucket = ((q.to_bits() >> 50) as usize)
-        .saturating_sub(4 * 1023)
-        .min(BUCKETS - 1);
-    usize::from(FIRST_COUNTS[bucket]).min(TABLE_COUNTS)
+    let bits = (q.max(1.0).to_bits() >> 49) as usize;
+    bits.wrapping_sub(8 * 1023).min(BUCKETS - 1)
+}
+
+/// The count of the smallest q of q's bucket ([`FIRST_COUNTS`]; below 1, count 1).
+#[cfg(test)]
+fn first_guess(q: f64) -> usize {
+    usize::from(FIRST_COUNTS[bucket(q)])
 }
 
 /// 2^±128: [`flatten_wang_small`] runs where the largest coordinate is surely within the range
@@ -159,13 +200,13 @@ const CHORD_ROUNDING: f64 = 1.0 / (1_u64 << 26) as f64;
 struct UniformCount {
     /// N.
     segments: usize,
-    /// fl(1/N).
-    step: f64,
+    /// fl(1/N) and its powers.
+    step: Step,
     /// Whether the rounding allowance of the forward differences fits beside the chord error.
     forward: bool,
 }
 
-/// i⁴ (1 − 2⁻²⁰) for i = 0..=[`TABLE_COUNTS`] (exact in f64: at most 20 significant bits
+/// i⁴ (1 − 2⁻²⁰) for i = 0..=[`TABLE_COUNTS`] (exact in f64: at most 24 significant bits
 /// times 20): on the table path, forward differences need q (1 + 2⁻⁴⁶) at most this (see
 /// [`UniformCount::new`]).
 const ROOMY_FOURTH_POWERS: [f64; TABLE_COUNTS + 1] = {
@@ -200,7 +241,7 @@ impl UniformCount {
     ///
     /// - Up to [`TABLE_COUNTS`] segments, with two comparisons: q' ≤ N⁴ (1 − 2⁻²⁰)
     ///   ([`ROOMY_FOURTH_POWERS`]) gives √Q / N² ≤ √(q' / N⁴) ≤ (1 + q' / N⁴) / 2 ≤ 1 − 2⁻²¹,
-    ///   and s ≤ 2²¹ tol ([`TABLE_SIZE_OVER_TOLERANCE`]) gives E ≤ 2⁻⁵⁰ s (32 + 64) < 2⁻⁴³ s
+    ///   and s ≤ 2²¹ tol ([`TABLE_SIZE_OVER_TOLERANCE`]) gives E ≤ 2⁻⁵⁰ s (64 + 64) = 2⁻⁴³ s
     ///   ≤ 2⁻²² tol, and 2⁻²² + 2⁻²⁶ < 2⁻²¹ (the rounding of s, a few units of 2⁻⁵³, is
     ///   inside that margin). It fails where the chord bound is within about 2⁻²¹ of the
     ///   tolerance (a relative 2⁻²² of N), or for a tolerance below 2⁻²¹ s.
@@ -218,7 +259,7 @@ impl UniformCount {
                 && size <= TABLE_SIZE_OVER_TOLERANCE * tolerance;
             return Some(Self {
                 segments: n,
-                step: RECIPROCALS[n],
+                step: STEPS[n],
                 forward,
             });
         }
@@ -246,7 +287,7 @@ impl UniformCount {
             && 2.0 * (allowance + CHORD_ROUNDING * tolerance) * n2 <= tolerance * (n2 - r);
         Some(Self {
             segments,
-            step: 1.0 / segments as f64,
+            step: Step::new(1.0 / segments as f64),
             forward,
         })
     }
@@ -278,12 +319,12 @@ pub(crate) fn flatten_wang_small(
             let d = p0 - p1 * 2.0 + p2;
             let count =
                 UniformCount::new((d * (0.25 / tolerance)).norm_squared(), size, tolerance)?;
-            let (n, h) = (count.segments, count.step);
+            let (n, step) = (count.segments, count.step);
             let a = (p1 - p0) * 2.0;
             Some(if count.forward {
-                forward_difference::quadratic([p0, a, d], p2, n, h, sink)
+                forward_difference::quadratic([p0, a, d], p2, n, step, sink)
             } else {
-                uniform(n, h, p0, p2, |t| p0 + (a + d * t) * t, sink)
+                uniform(n, step.h, p0, p2, |t| p0 + (a + d * t) * t, sink)
             })
         }
         [p0, p1, p2, p3] => {
@@ -294,14 +335,14 @@ pub(crate) fn flatten_wang_small(
             let k = 0.75 / tolerance;
             let (q0, q1) = ((d0 * k).norm_squared(), (d1 * k).norm_squared());
             let count = UniformCount::new(if q0 > q1 { q0 } else { q1 }, size, tolerance)?;
-            let (n, h) = (count.segments, count.step);
+            let (n, step) = (count.segments, count.step);
             let (a, b, c) = ((p1 - p0) * 3.0, d0 * 3.0, d1 - d0);
             Some(if count.forward {
-                forward_difference::cubic([p0, a, b, c], p3, n, h, sink)
+                forward_difference::cubic([p0, a, b, c], p3, n, step, sink)
             } else {
                 // (P₀ + a t) + (b + c t) t²: two short chains instead of Horner's one long one.
                 let eval = |t: f64| (p0 + a * t) + (b + c * t) * (t * t);
-                uniform(n, h, p0, p3, eval, sink)
+                uniform(n, step.h, p0, p3, eval, sink)
             })
         }
         _ => None,
@@ -519,6 +560,7 @@ mod tests {
         for (q, size, tol, forward) in [
             (20.5_f64.powi(4), 4.0, 1e-3, true),
             (400.5_f64.powi(4), 4.0, 1e-3, true),
+            (50.5_f64.powi(4), 4.0, 1e-3, true),
             (3_000.5_f64.powi(4), 4.0, 1e-5, true),
             // The allowance 2⁻⁵⁰ s (N + 64) above tol / 1024.
             (20.5_f64.powi(4), 1e12, 1e-3, false),
@@ -529,18 +571,30 @@ mod tests {
             (16.0_f64.powi(4), 4.0, 1e-3, true),
             (20.0_f64.powi(4) * (1.0 - 1e-9), 4.0, 1e-3, false),
             (20.0_f64.powi(4) * (1.0 - 1e-5), 4.0, 1e-3, true),
-            // Up to 32 segments, a tolerance below 2⁻²¹ s: evaluated.
+            (50.0_f64.powi(4) * (1.0 - 1e-9), 4.0, 1e-3, false),
+            (64.0_f64.powi(4) * (1.0 - 1e-5), 4.0, 1e-3, true),
+            // Up to 64 segments, a tolerance below 2⁻²¹ s: evaluated.
             (20.5_f64.powi(4), 1e4, 1e-3, false),
             (400.5_f64.powi(4), 1e4, 1e-3, true),
         ] {
             let count = UniformCount::new(q, size, tol).unwrap();
             assert_eq!(count.forward, forward, "{q} {size} {tol}");
-            assert_eq!(count.step, 1.0 / count.segments as f64);
+            assert_eq!(count.step, Step::new(1.0 / count.segments as f64));
         }
         assert!(UniformCount::new(f64::NAN, 4.0, 1e-3).is_none());
         assert!(UniformCount::new(MAX_FOURTH_POWER * 1.01, 4.0, 1e-3).is_none());
         let top = UniformCount::new(MAX_FOURTH_POWER / 1.01, 4.0, 1e-3).unwrap();
         assert!(top.segments <= MAX_WANG_SEGMENTS);
+    }
+
+    /// The table of steps holds what the general path computes at run time, bit for bit.
+    #[test]
+    fn step_table_is_the_run_time_step() {
+        for (i, &step) in STEPS.iter().enumerate().skip(1) {
+            let h = 1.0 / std::hint::black_box(i as f64);
+            let h2 = h * h;
+            assert_eq!((step.h, step.h2, step.h3), (h, h2, h2 * h), "{i}");
+        }
     }
 
     /// Splitmix64: a seeded stream of u64 for the table tests.
@@ -562,29 +616,31 @@ mod tests {
         Some(n)
     }
 
-    /// The first guess of `count_from_fourth_power` is within [i − 4, i] at both ends of the
+    /// The first guess of `count_from_fourth_power` is within [i − 2, i] at both ends of the
     /// interval ((i − 1)⁴, i⁴] of every count i (so everywhere, by its monotonicity), and the
-    /// count is the smallest i with q ≤ i⁴ on a dense sweep of [0, 32⁴].
+    /// count is the smallest i with q ≤ i⁴ on a dense sweep of [0, 64⁴].
     #[test]
     fn count_from_fourth_power_is_exact_on_its_range() {
         for i in 1..=TABLE_COUNTS {
-            let top = (i as f64).powi(4);
+            let top = COUNT_BOUNDS[i];
             let bottom = if i == 1 {
                 0.0
             } else {
-                ((i - 1) as f64).powi(4).next_up()
+                COUNT_BOUNDS[i - 1].next_up()
             };
+            // Below i⁴ by a relative 2⁻⁴⁵ up to one rounding.
+            let exact = (i as f64).powi(4);
+            assert!(
+                top < exact && top >= exact * (1.0 - 2.0 * 2f64.powi(-45)),
+                "{i}"
+            );
             assert!(first_guess(top) <= i, "{i}");
-            assert!(first_guess(bottom) + 4 >= i, "{i}");
+            assert!(first_guess(bottom) + 2 >= i, "{i}");
             assert_eq!(count_from_fourth_power(top), i);
             assert_eq!(count_from_fourth_power(bottom), i);
         }
-        let naive = |q: f64| {
-            (1..)
-                .find(|&i: &usize| q <= (i as f64).powi(4))
-                .unwrap_or(0)
-        };
-        let limit = (TABLE_COUNTS as f64).powi(4);
+        let naive = |q: f64| (1..).find(|&i: &usize| q <= COUNT_BOUNDS[i]).unwrap_or(0);
+        let limit = COUNT_BOUNDS[TABLE_COUNTS];
         for k in 0..=200_000 {
             let q = limit * (f64::from(k) / 200_000.0).powi(4);
             assert_eq!(count_from_fourth_power(q), naive(q), "{q}");
@@ -625,7 +681,7 @@ mod tests {
                 (r(next()), r(next()), false)
             } else {
                 // |d| = 4 i² num / (√weight 2^shift) along x, when whole.
-                let i = (next() % 32 + 1) as i64;
+                let i = (next() % TABLE_COUNTS as u64 + 1) as i64;
                 let root = if cubic { 3 } else { 1 };
                 let top = 4 * i * i * num as i64;
                 let bottom = root << shift;

@@ -2,8 +2,9 @@
 #![allow(clippy::unwrap_used, reason = "tests fail loudly")]
 
 use subdiv_fit::{
-    CORNER_TOLERANCE, Closure, FitMode, FitOptions, MAX_SAMPLES_PER_SEGMENT, Reduction,
-    SubdivFitError, Vector2, fit, fit_with_corners, point_polyline_distance, scaled_corners,
+    CORNER_TOLERANCE, Closure, Corner, EXACT_CORNER_TOLERANCE, FitMode, FitOptions,
+    MAX_SAMPLES_PER_SEGMENT, Reduction, SubdivFitError, Vector2, fit, fit_with_corners,
+    fit_with_known_corners, point_polyline_distance, scaled_corners,
 };
 
 /// A deterministic uniform generator in [-1, 1].
@@ -379,5 +380,47 @@ fn refit_keeps_the_exact_turns_of_a_stem_and_a_bowl() {
         }
         let r = f.last().unwrap();
         assert!(r.max_data_to_curve <= 1e-3 && r.max_curve_to_data <= 1e-3);
+    }
+}
+
+/// With the corners' exact tangents given (`Corner::with_tangents`, the stem's direction and the
+/// cubic's end tangents), `Reduction::Refit` with `EXACT_CORNER_TOLERANCE` keeps every corner of
+/// the stem-and-bowl outlines within that bound (0.9°) of its exact turn, within the tolerance;
+/// the other reductions bound the same tangents within 1°.
+#[test]
+fn exact_tangents_keep_the_turns_within_the_bound() {
+    let base = FitOptions::new(1e-3).with_corner_tolerance(Some(EXACT_CORNER_TOLERANCE));
+    let up = Vector2::new(0.0, 1.0);
+    for (b1, b2) in [
+        (Vector2::new(0.8, 1.0), Vector2::new(0.8, 0.0)),
+        (Vector2::new(1.2, 0.9), Vector2::new(0.2, -0.3)),
+        (Vector2::new(0.3, 1.4), Vector2::new(1.1, 0.1)),
+    ] {
+        let (data, corners, exact) = stem_and_bowl(b1, b2);
+        // At the bottom the bowl arrives along (0, 0) − b2 and the stem leaves upwards; at the
+        // top the stem arrives upwards and the bowl leaves along b1 − (0, 1).
+        let known = [
+            Corner::with_tangents(corners[0], Vector2::new(0.0, 0.0) - b2, up).unwrap(),
+            Corner::with_tangents(corners[1], up, b1 - up).unwrap(),
+        ];
+        for (reduction, bound) in [
+            (Reduction::Refit, EXACT_CORNER_TOLERANCE.to_degrees() + 1e-9),
+            (Reduction::RemovePoints, 1.0),
+            (Reduction::RespaceAndRemove, 1.0),
+        ] {
+            let opts = base.with_reduction(reduction);
+            let f = fit_with_known_corners(&data, Closure::Closed, &known, &opts).unwrap();
+            for (c, exact) in corners.iter().zip(exact) {
+                let j = f.fitting.iter().position(|&i| i == *c).unwrap();
+                assert!(f.curve.is_sharp(j));
+                let error = (polygon_turn(f.curve.points(), j) - exact).abs();
+                assert!(
+                    error <= bound,
+                    "{b1:?} {b2:?} {reduction:?} corner {c}: {error}°"
+                );
+            }
+            let r = f.last().unwrap();
+            assert!(r.max_data_to_curve <= 1e-3 && r.max_curve_to_data <= 1e-3);
+        }
     }
 }

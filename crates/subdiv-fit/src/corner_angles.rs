@@ -47,11 +47,11 @@ use crate::insertion::segment_range;
 pub const CORNER_TOLERANCE: f64 = 0.5 * std::f64::consts::PI / 180.0;
 
 /// A bound for [`FitOptions::corner_tolerance`] when the corners come with their exact tangents
-/// ([`Corner::with_tangents`], as [`fit_bez_path`](crate::fit_bez_path) gives them): 0.9° (in
+/// ([`Corner::with_tangents`], as `fit_bez_path` (feature `kurbo`) gives them): 0.9° (in
 /// radians). The bound is then the whole error of a kept corner's turn against the outline's, so
 /// it can take nearly all of a 1° budget; the last 0.1° is a margin for the outline's tangents
 /// themselves (a path's control points are often rounded to a grid, and a joint where a tangent
-/// turns by less than [`PATH_CORNER_ANGLE`](crate::PATH_CORNER_ANGLE) counts as smooth).
+/// turns by less than `PATH_CORNER_ANGLE` (feature `kurbo`) counts as smooth).
 pub const EXACT_CORNER_TOLERANCE: f64 = 0.9 * std::f64::consts::PI / 180.0;
 
 /// The longest reach of a one-sided tangent estimate, in feature scales σ.

@@ -118,11 +118,15 @@ pub enum Reduction {
     /// [`FitOptions::mode`]) and then the same re-spacing and removal. Otherwise round 0 of the
     /// reports is the span fit. On the printable ASCII glyphs of DejaVu Sans at 10⁻³ em: 1,795
     /// control points (TrueType stores 1,797) in about 1.5 ms per glyph. With
-    /// [`FitOptions::corner_tolerance`] each trial puts the free neighbours of the span's corners
-    /// on the data's tangents (one-sided quadratic estimates) and refits the other points around
-    /// them, and a span is accepted only when its side of each end corner is within half the
-    /// bound; on the same glyphs with 0.5°: 1,905 control points in about 3.2 ms per glyph, every
-    /// kept corner within 0.38° of the outline's turn (9.29° without the bound).
+    /// [`FitOptions::corner_tolerance`] a free neighbour of a corner whose polygon edge leaves the
+    /// corner's tangent by more than half the bound after a trial's refit is constrained to a ray
+    /// at half the bound from the tangent (one unknown along it in the least-squares system) and
+    /// the points are refitted once more, and a span is accepted only when its side of each end
+    /// corner is within half the bound; on the same glyphs with the outline's exact tangents
+    /// (`fit_bez_path` (feature `kurbo`)) and
+    /// [`EXACT_CORNER_TOLERANCE`](crate::EXACT_CORNER_TOLERANCE): 1,884 control points in about
+    /// 2.5 ms per glyph, every kept corner within 0.90° of the outline's turn (9.29° without the
+    /// bound).
     Refit,
 }
 
@@ -186,12 +190,14 @@ pub struct FitOptions {
     /// configuration).
     pub reduction: Reduction,
     /// How far (radians) the turn of the curve at a kept corner may be from the data's turn there
-    /// (estimated from one-sided quadratic fits of the samples next to the corner). With a bound,
+    /// (the exact tangents of a known corner that has them, [`Corner::with_tangents`](crate::Corner),
+    /// else estimated from one-sided quadratic fits of the samples next to the corner). With a bound,
     /// the control points next to a corner are moved onto the data's tangents after each solve
     /// (see [`FitMode`]); once the distance tolerance is met, a corner still off by more (its
     /// neighbour is sharp or shared with another corner) gets fitting points inserted next to it;
     /// and the reduction refuses a step that moves a corner beyond the bound. Only sharp vertices
-    /// where the data turn by at least 20° (or the corner angle) count. Default `None` (unchecked,
+    /// where the data turn by at least 20° (or the corner angle) count, and every known corner with
+    /// tangents. Default `None` (unchecked,
     /// as in the paper); [`CORNER_TOLERANCE`](crate::CORNER_TOLERANCE) (0.5°) keeps the corners of
     /// the crate's test outline within 0.001° of the data's, and costs control points and time:
     /// on the printable ASCII glyphs of DejaVu Sans at 10⁻³ em 2,858 control points instead of

@@ -219,7 +219,7 @@ fn end_tangent(c: &BezierCurve<2>) -> Option<Vector2> {
 /// ```
 ///
 /// # Errors
-/// As [`sample_bez_path`] and [`fit_with_corners`].
+/// As [`sample_bez_path`] and [`fit_with_known_corners`].
 pub fn fit_bez_path(
     path: &BezPath,
     options: &FitOptions,

@@ -424,3 +424,51 @@ fn exact_tangents_keep_the_turns_within_the_bound() {
         }
     }
 }
+
+/// `fit_bez_path` passes a path's own tangents at its corners: with `Reduction::Refit` and
+/// `EXACT_CORNER_TOLERANCE` every corner of an outline of a line, a quadratic, a cubic and the
+/// closing line keeps its turn within 0.9° of the path's, computed independently from kurbo's
+/// segment derivatives at the joints, and the fit stays within the tolerance of the samples.
+#[cfg(feature = "kurbo")]
+#[test]
+fn fit_bez_path_keeps_the_paths_corner_turns() {
+    use kurbo::{ParamCurve, ParamCurveDeriv, PathSeg};
+    let path =
+        kurbo::BezPath::from_svg("M0 0 L1 0 Q1.3 0.6 0.6 1 C0.3 1.2 -0.1 0.9 0.1 0.4 Z").unwrap();
+    let segs: Vec<PathSeg> = path.segments().collect();
+    let deriv = |s: &PathSeg, t: f64| match s {
+        PathSeg::Line(l) => l.deriv().eval(t).to_vec2(),
+        PathSeg::Quad(q) => q.deriv().eval(t).to_vec2(),
+        PathSeg::Cubic(c) => c.deriv().eval(t).to_vec2(),
+    };
+    let joints: Vec<(kurbo::Point, f64)> = (0..segs.len())
+        .map(|i| {
+            let (a, b) = (segs[i], segs[(i + 1) % segs.len()]);
+            let (u, v) = (deriv(&a, 1.0), deriv(&b, 0.0));
+            (b.eval(0.0), u.cross(v).atan2(u.dot(v)).to_degrees().abs())
+        })
+        .collect();
+    let tol = 1e-3;
+    let opts = FitOptions::new(tol)
+        .with_reduction(Reduction::Refit)
+        .with_corner_tolerance(Some(EXACT_CORNER_TOLERANCE));
+    let (_, fits) = subdiv_fit::fit_bez_path(&path, &opts).unwrap();
+    assert_eq!(fits.len(), 1);
+    let f = &fits[0];
+    let r = f.last().unwrap();
+    assert!(
+        r.max_data_to_curve <= tol && r.max_curve_to_data <= tol,
+        "{r:?}"
+    );
+    let p = f.curve.points();
+    for (at, exact) in joints {
+        let j = (0..p.len())
+            .find(|&j| f.curve.is_sharp(j) && (p[j].x() - at.x).hypot(p[j].y() - at.y) < 1e-12)
+            .unwrap();
+        let error = (polygon_turn(p, j) - exact).abs();
+        assert!(
+            error <= EXACT_CORNER_TOLERANCE.to_degrees() + 1e-9,
+            "{at:?}: {error}°"
+        );
+    }
+}

@@ -8,7 +8,9 @@
 //! about the curvature times the length of the corner's segments, and a reduction that lengthens
 //! those segments moves it.
 //!
-//! The data's tangent on each side of a corner at data point `c` is the linear coefficient `b` of
+//! The tangents a corner's turn is bounded against ([`CornerTangents`], found once per fit) are
+//! the exact ones of a known corner that states them ([`Corner::with_tangents`]), or else the
+//! data's: on each side of a corner at data point `c`, the linear coefficient `b` of
 //! the least-squares quadratic `v(t) = v_c + b t + a t²` through the corner point, in the
 //! polyline length `t` of the samples on that side ([`data_tangent`]): over a reach of at most
 //! [`REACH_SCALES`] feature scales and half the way to the next sharp fitting point, halved while
@@ -16,29 +18,41 @@
 //! the quadratic cannot follow biases its tangent), down to one feature scale; dense data are
 //! thinned to about [`SAMPLES`] samples over the reach (tested: an arc of
 //! radius 1 over a reach of 0.1 to 10⁻⁴ rad, a line exactly; noise of amplitude `ε` moves the
-//! estimate by about `ε / reach`). Only sharp vertices where these tangents turn by at least
+//! estimate by about `ε / reach`). Only sharp vertices where these estimates turn by at least
 //! [`MIN_TURN`] (20°, or the corner angle if smaller) count as corners: a bend found as a corner at
-//! the feature scale that the data resolve as smooth keeps its turn unchecked.
+//! the feature scale that the data resolve as smooth keeps its turn unchecked. A known corner with
+//! tangents always counts.
 //!
-//! [`neighbours_on_tangents`] moves a corner's neighbouring control points onto the data's tangent
-//! lines after each solve (in least-squares mode the rest is solved again around them; with
-//! interpolation only by up to a quarter of the tolerance, since nothing else adapts);
-//! [`corner_insertions`] are the points the fitting loop inserts next to a corner whose turn is
-//! still off once the distance tolerance is met (a neighbour that is sharp or shared by two
-//! corners stays where the solve put it); [`corner_turns_kept`] is the check a reduction step
-//! calls.
+//! [`corner_rays`] are the rays `p_j ± λ t` that a corner's free neighbours are constrained to
+//! in [`Reduction::Refit`](crate::Reduction::Refit)'s least-squares refits (one unknown `λ` per
+//! side, see `on_rays`); [`neighbours_on_tangents`] moves a corner's neighbouring control points
+//! onto the tangent lines after each solve of the other modes (in least-squares mode the rest is
+//! solved again around them; with interpolation only by up to a quarter of the tolerance, since
+//! nothing else adapts); [`corner_insertions`] are the points the fitting loop inserts next to a
+//! corner whose turn is still off once the distance tolerance is met (a neighbour that is sharp or
+//! shared by two corners stays where the solve put it); [`corner_turns_kept`] is the check a
+//! reduction step calls.
 
 use bez_core::Vector;
 
 use crate::SubdivCurve;
 use crate::chord::ChordLengths;
+use crate::corner::Corner;
 use crate::curvature::angle_between;
 use crate::fit::FitOptions;
 use crate::insertion::segment_range;
 
-/// A bound for [`FitOptions::corner_tolerance`]: 0.5° (in radians), half of a 1° budget, the other
-/// half left to the estimate of the data's tangents.
+/// A bound for [`FitOptions::corner_tolerance`] against the data's tangent estimates: 0.5° (in
+/// radians), half of a 1° budget, the other half left to the estimate of the data's tangents.
 pub const CORNER_TOLERANCE: f64 = 0.5 * std::f64::consts::PI / 180.0;
+
+/// A bound for [`FitOptions::corner_tolerance`] when the corners come with their exact tangents
+/// ([`Corner::with_tangents`], as `fit_bez_path` (feature `kurbo`) gives them): 0.9° (in
+/// radians). The bound is then the whole error of a kept corner's turn against the outline's, so
+/// it can take nearly all of a 1° budget; the last 0.1° is a margin for the outline's tangents
+/// themselves (a path's control points are often rounded to a grid, and a joint where a tangent
+/// turns by less than `PATH_CORNER_ANGLE` (feature `kurbo`) counts as smooth).
+pub const EXACT_CORNER_TOLERANCE: f64 = 0.9 * std::f64::consts::PI / 180.0;
 
 /// The longest reach of a one-sided tangent estimate, in feature scales σ.
 pub(crate) const REACH_SCALES: f64 = 16.0;
@@ -59,22 +73,317 @@ pub(crate) const MODEL_FIT: f64 = 1e-4;
 /// A bend found as a corner at the feature scale but resolved by the data as smooth turns by less.
 pub(crate) const MIN_TURN: f64 = std::f64::consts::PI / 9.0;
 
-/// One interior sharp vertex: its index in the fitting points and the data's incoming and
-/// outgoing unit tangents there.
-struct Corner<const D: usize> {
-    vertex: usize,
+/// One bounded corner: its data index and the incoming and outgoing unit tangents there.
+#[derive(Debug, Clone, Copy)]
+struct Bounded<const D: usize> {
+    index: usize,
     incoming: Vector<D>,
     outgoing: Vector<D>,
 }
 
-/// How far a curve's corner is from the data's.
+/// The corners whose turn [`FitOptions::corner_tolerance`] bounds, with their tangents: found
+/// once per fit (the sharp fitting points, which the tangent estimates depend on, stay the same
+/// through the insertion loop, the span fit and the reductions, which only add or remove regular
+/// points). Empty when the option is `None`.
+#[derive(Debug, Clone)]
+pub(crate) struct CornerTangents<const D: usize> {
+    /// By increasing data index.
+    list: Vec<Bounded<D>>,
+}
+
+/// A ray `anchor + λ direction`, `λ > 0`, that control point `vertex` is constrained to: the
+/// tangent of a corner at `anchor` (its sharp vertex) on the side of `vertex`.
+#[derive(Debug, Clone, Copy)]
+pub(crate) struct Ray<const D: usize> {
+    pub(crate) vertex: usize,
+    pub(crate) anchor: Vector<D>,
+    /// Unit direction.
+    pub(crate) direction: Vector<D>,
+}
+
+/// How far a curve's corner is from the tangents it is bounded against.
 struct Deviation {
-    /// |turn of the curve − turn of the data|.
+    /// |turn of the curve − turn of the tangents|.
     turn: f64,
-    /// Angle between the curve's and the data's incoming tangents.
+    /// Angle between the curve's and the given incoming tangents.
     incoming: f64,
-    /// Angle between the curve's and the data's outgoing tangents.
+    /// Angle between the curve's and the given outgoing tangents.
     outgoing: f64,
+}
+
+impl<const D: usize> CornerTangents<D> {
+    /// No bounded corner.
+    pub(crate) fn none() -> Self {
+        Self { list: Vec::new() }
+    }
+
+    /// The interior sharp vertices of the fitting points (open data's ends are not corners) that
+    /// are `known` corners with tangents, with those, or else where the data's estimates turn by
+    /// at least [`MIN_TURN`] (or the corner angle), with the estimates. Empty unless
+    /// [`FitOptions::corner_tolerance`] is set.
+    pub(crate) fn new(
+        data: &[Vector<D>],
+        fitting: &[(usize, bool)],
+        closed: bool,
+        known: &[Corner<D>],
+        options: &FitOptions,
+    ) -> Self {
+        if options.corner_tolerance.is_none() {
+            return Self::none();
+        }
+        let n = data.len();
+        let k = fitting.len();
+        let sigma = options.feature_scale * options.tolerance;
+        let sharp: Vec<usize> = (0..k).filter(|&j| fitting[j].1).collect();
+        let min_turn = (std::f64::consts::PI - options.sharp_angle).min(MIN_TURN);
+        let mut list = Vec::new();
+        for (m, &j) in sharp.iter().enumerate() {
+            if !closed && (j == 0 || j + 1 == k) {
+                continue;
+            }
+            let c = fitting[j].0;
+            if let Some((incoming, outgoing)) = known
+                .iter()
+                .filter(|g| g.index() == c)
+                .find_map(Corner::tangents)
+            {
+                list.push(Bounded {
+                    index: c,
+                    incoming,
+                    outgoing,
+                });
+                continue;
+            }
+            // Data points to the neighbouring sharp fitting points (or the data's ends).
+            let (before, after) = if closed {
+                let prev = fitting[sharp[(m + sharp.len() - 1) % sharp.len()]].0;
+                let next = fitting[sharp[(m + 1) % sharp.len()]].0;
+                let gap = |a: usize, b: usize| if b > a { b - a } else { b + n - a };
+                (gap(prev, c), gap(c, next))
+            } else {
+                let prev = sharp[..m].last().map_or(0, |&p| fitting[p].0);
+                let next = sharp.get(m + 1).map_or(n - 1, |&p| fitting[p].0);
+                (c - prev, next - c)
+            };
+            let reach = REACH_SCALES * sigma;
+            let tangent = |forwards: bool, gap: usize| {
+                data_tangent(data, closed, c, forwards, gap.div_ceil(2), reach, sigma)
+            };
+            if let (Some(incoming), Some(outgoing)) = (tangent(false, before), tangent(true, after))
+                && angle_between(&incoming, &outgoing) >= min_turn
+            {
+                list.push(Bounded {
+                    index: c,
+                    incoming,
+                    outgoing,
+                });
+            }
+        }
+        list.sort_unstable_by_key(|b| b.index);
+        Self { list }
+    }
+
+    /// The bounded corners among the sharp vertices of `fitting`: (vertex, corner), by vertex.
+    fn at<'a>(
+        &'a self,
+        fitting: &'a [(usize, bool)],
+    ) -> impl Iterator<Item = (usize, &'a Bounded<D>)> + 'a {
+        self.list.iter().filter_map(|b| {
+            let j = fitting.binary_search_by_key(&b.index, |f| f.0).ok()?;
+            fitting[j].1.then_some((j, b))
+        })
+    }
+}
+
+/// How far the curve's turn at vertex `j` is from the corner's.
+fn deviation<const D: usize>(curve: &SubdivCurve<D>, j: usize, corner: &Bounded<D>) -> Deviation {
+    let p = curve.points();
+    let k = p.len();
+    let incoming = p[j] - p[(j + k - 1) % k];
+    let outgoing = p[(j + 1) % k] - p[j];
+    let turn = angle_between(&incoming, &outgoing);
+    let data_turn = angle_between(&corner.incoming, &corner.outgoing);
+    Deviation {
+        turn: (turn - data_turn).abs(),
+        incoming: angle_between(&incoming, &corner.incoming),
+        outgoing: angle_between(&outgoing, &corner.outgoing),
+    }
+}
+
+/// The rays of the neighbours of the corners of `curve` (fitting points `fitting`) for which
+/// `movable` holds: each side's neighbour on the corner's tangent there, unless it is sharp
+/// itself (the segment between two sharp vertices is a straight line) or the neighbour of two
+/// corners.
+pub(crate) fn corner_rays<const D: usize>(
+    corners: &CornerTangents<D>,
+    fitting: &[(usize, bool)],
+    curve: &SubdivCurve<D>,
+    movable: impl Fn(usize) -> bool,
+) -> Vec<Ray<D>> {
+    let k = fitting.len();
+    let found: Vec<(usize, &Bounded<D>)> = corners.at(fitting).collect();
+    let mut claims = vec![0u8; k];
+    for &(j, _) in &found {
+        claims[(j + k - 1) % k] += 1;
+        claims[(j + 1) % k] += 1;
+    }
+    let mut rays = Vec::new();
+    for (j, c) in found {
+        for (vertex, direction) in [((j + k - 1) % k, -c.incoming), ((j + 1) % k, c.outgoing)] {
+            if !fitting[vertex].1 && claims[vertex] == 1 && movable(vertex) {
+                rays.push(Ray {
+                    vertex,
+                    anchor: curve.points()[j],
+                    direction,
+                });
+            }
+        }
+    }
+    rays
+}
+
+/// The rays of [`corner_rays`] for the sides of the corners where the curve `fitted` (fitting points
+/// `fitting`) leaves the corner's tangent by more than `slack` (radians, below 90°), each turned
+/// from the tangent towards the curve's polygon edge by `slack`: the boundary of the cone of
+/// directions within `slack` that is nearest to the unconstrained fit (a side that points backwards
+/// gets the tangent itself). Empty when every side is within `slack`.
+pub(crate) fn cone_rays<const D: usize>(
+    corners: &CornerTangents<D>,
+    fitting: &[(usize, bool)],
+    fitted: &SubdivCurve<D>,
+    slack: f64,
+    movable: impl Fn(usize) -> bool,
+) -> Vec<Ray<D>> {
+    let mut rays = corner_rays(corners, fitting, fitted, movable);
+    rays.retain_mut(|ray| {
+        let edge = fitted.points()[ray.vertex] - ray.anchor;
+        if angle_between(&edge, &ray.direction) <= slack {
+            return false;
+        }
+        let across = edge - ray.direction * edge.dot(&ray.direction);
+        let norm = across.norm();
+        if edge.dot(&ray.direction) > 0.0 && norm > 0.0 {
+            ray.direction = ray.direction * slack.cos() + across * (slack.sin() / norm);
+        }
+        true
+    });
+    rays
+}
+
+/// The control points of `curve` with the neighbours of its corners moved onto the corners'
+/// tangent lines there (orthogonal projection, kept ahead of the corner), and which were moved;
+/// `None` when none was. Only vertices for which `movable` holds move; a neighbour shared by two
+/// corners, or sharp itself, or one that would move by more than `max_move`, stays.
+pub(crate) fn neighbours_on_tangents<const D: usize>(
+    corners: &CornerTangents<D>,
+    fitting: &[(usize, bool)],
+    curve: &SubdivCurve<D>,
+    max_move: f64,
+    movable: impl Fn(usize) -> bool,
+) -> Option<(SubdivCurve<D>, Vec<bool>)> {
+    let mut points = curve.points().to_vec();
+    let mut moved = vec![false; points.len()];
+    for ray in corner_rays(corners, fitting, curve, movable) {
+        let along = (points[ray.vertex] - ray.anchor).dot(&ray.direction);
+        let target = ray.anchor + ray.direction * along;
+        if along > 0.0 && (target - points[ray.vertex]).norm() <= max_move {
+            points[ray.vertex] = target;
+            moved[ray.vertex] = true;
+        }
+    }
+    if !moved.contains(&true) {
+        return None;
+    }
+    let curve = SubdivCurve::new(points, curve.kinds().to_vec(), curve.closure()).ok()?;
+    Some((curve, moved))
+}
+
+/// The corner check of a reduction step: whether the trial curve `next` (fitting points `trial`)
+/// keeps every corner's turn within [`FitOptions::corner_tolerance`] of the corner's, or at least
+/// as close as the current curve `curve` (fitting points `fitting`, the same sharp vertices) has
+/// it. Always `true` when the option is `None`.
+pub(crate) fn corner_turns_kept<const D: usize>(
+    corners: &CornerTangents<D>,
+    trial: &[(usize, bool)],
+    next: &SubdivCurve<D>,
+    fitting: &[(usize, bool)],
+    curve: &SubdivCurve<D>,
+    options: &FitOptions,
+) -> bool {
+    let Some(bound) = options.corner_tolerance else {
+        return true;
+    };
+    corners
+        .at(trial)
+        .zip(corners.at(fitting))
+        .all(|((t, c), (j, _))| {
+            deviation(next, t, c).turn <= bound.max(deviation(curve, j, c).turn)
+        })
+}
+
+/// The side check of [`Reduction::Refit`](crate::Reduction::Refit)'s span fit: whether the trial
+/// curve `next` (fitting points `trial`) has the tangents of the corners at the ends of the span
+/// between data indices `start` and `end` (the span's side of each) within half of
+/// [`FitOptions::corner_tolerance`] of the corner's, so that the two spans at a corner keep its
+/// turn within the bound. Always `true` when the option is `None`.
+pub(crate) fn span_sides_kept<const D: usize>(
+    corners: &CornerTangents<D>,
+    trial: &[(usize, bool)],
+    next: &SubdivCurve<D>,
+    options: &FitOptions,
+    n: usize,
+    (start, end): (usize, usize),
+) -> bool {
+    let Some(bound) = options.corner_tolerance else {
+        return true;
+    };
+    corners.at(trial).all(|(j, c)| {
+        if c.index != start % n && c.index != end % n {
+            return true;
+        }
+        let d = deviation(next, j, c);
+        (c.index != start % n || d.outgoing <= 0.5 * bound)
+            && (c.index != end % n || d.incoming <= 0.5 * bound)
+    })
+}
+
+/// Inserts, next to every corner whose turn in `curve` is off by more than
+/// [`FitOptions::corner_tolerance`], a regular fitting point at the chord-length middle of the
+/// corner's segment on each side whose tangent is off by more than half of it (at least one side
+/// is: the turn's error is at most the sum of the sides'). Returns the number inserted: 0 when
+/// every corner is within the bound, the option is `None`, or the segments have no interior data.
+pub(crate) fn corner_insertions<const D: usize>(
+    corners: &CornerTangents<D>,
+    chords: &ChordLengths,
+    fitting: &mut Vec<(usize, bool)>,
+    curve: &SubdivCurve<D>,
+    n: usize,
+    options: &FitOptions,
+) -> usize {
+    let Some(bound) = options.corner_tolerance else {
+        return 0;
+    };
+    let k = fitting.len();
+    let mut new = Vec::new();
+    for (j, corner) in corners.at(fitting) {
+        let d = deviation(curve, j, corner);
+        if d.turn <= bound {
+            continue;
+        }
+        for (off, segment) in [(d.incoming, (j + k - 1) % k), (d.outgoing, j)] {
+            if off > 0.5 * bound {
+                let (a, b) = segment_range(fitting, segment, n);
+                new.extend(chords.middle(a, b));
+            }
+        }
+    }
+    let before = fitting.len();
+    for i in new {
+        if let Err(pos) = fitting.binary_search_by_key(&i, |f| f.0) {
+            fitting.insert(pos, (i, false));
+        }
+    }
+    fitting.len() - before
 }
 
 /// The data's unit tangent at data point `c`, leaving it forwards (`forwards`) or backwards along
@@ -172,206 +481,6 @@ fn quadratic_tangent<const D: usize>(side: &[(f64, Vector<D>)]) -> (Vector<D>, f
         })
         .sum();
     (b, (sum2 / side.len() as f64).sqrt())
-}
-
-/// The interior sharp vertices of the fitting points (open data's ends are not corners) where the
-/// data turn by at least [`MIN_TURN`] (or the corner angle), with the data's tangents there.
-fn corners<const D: usize>(
-    data: &[Vector<D>],
-    fitting: &[(usize, bool)],
-    closed: bool,
-    options: &FitOptions,
-) -> Vec<Corner<D>> {
-    let n = data.len();
-    let k = fitting.len();
-    let sigma = options.feature_scale * options.tolerance;
-    let sharp: Vec<usize> = (0..k).filter(|&j| fitting[j].1).collect();
-    let min_turn = (std::f64::consts::PI - options.sharp_angle).min(MIN_TURN);
-    let mut out = Vec::new();
-    for (m, &j) in sharp.iter().enumerate() {
-        if !closed && (j == 0 || j + 1 == k) {
-            continue;
-        }
-        let c = fitting[j].0;
-        // Data points to the neighbouring sharp fitting points (or the data's ends).
-        let (before, after) = if closed {
-            let prev = fitting[sharp[(m + sharp.len() - 1) % sharp.len()]].0;
-            let next = fitting[sharp[(m + 1) % sharp.len()]].0;
-            let gap = |a: usize, b: usize| if b > a { b - a } else { b + n - a };
-            (gap(prev, c), gap(c, next))
-        } else {
-            let prev = sharp[..m].last().map_or(0, |&p| fitting[p].0);
-            let next = sharp.get(m + 1).map_or(n - 1, |&p| fitting[p].0);
-            (c - prev, next - c)
-        };
-        let reach = REACH_SCALES * sigma;
-        let tangent = |forwards: bool, gap: usize| {
-            data_tangent(data, closed, c, forwards, gap.div_ceil(2), reach, sigma)
-        };
-        if let (Some(incoming), Some(outgoing)) = (tangent(false, before), tangent(true, after))
-            && angle_between(&incoming, &outgoing) >= min_turn
-        {
-            out.push(Corner {
-                vertex: j,
-                incoming,
-                outgoing,
-            });
-        }
-    }
-    out
-}
-
-/// How far the curve's turn at the corner's vertex is from the data's.
-fn deviation<const D: usize>(curve: &SubdivCurve<D>, corner: &Corner<D>) -> Deviation {
-    let p = curve.points();
-    let k = p.len();
-    let j = corner.vertex;
-    let incoming = p[j] - p[(j + k - 1) % k];
-    let outgoing = p[(j + 1) % k] - p[j];
-    let turn = angle_between(&incoming, &outgoing);
-    let data_turn = angle_between(&corner.incoming, &corner.outgoing);
-    Deviation {
-        turn: (turn - data_turn).abs(),
-        incoming: angle_between(&incoming, &corner.incoming),
-        outgoing: angle_between(&outgoing, &corner.outgoing),
-    }
-}
-
-/// The control points of `curve` with the neighbours of its corners moved onto the data's
-/// tangent lines there (orthogonal projection, kept ahead of the corner), and which were moved;
-/// `None` when none was. Only vertices for which `movable` holds move; a neighbour shared by two
-/// corners, or sharp itself (the segment between two sharp vertices is a straight line), or one
-/// that would move by more than `max_move`, stays.
-pub(crate) fn neighbours_on_tangents<const D: usize>(
-    data: &[Vector<D>],
-    fitting: &[(usize, bool)],
-    curve: &SubdivCurve<D>,
-    closed: bool,
-    options: &FitOptions,
-    max_move: f64,
-    movable: impl Fn(usize) -> bool,
-) -> Option<(SubdivCurve<D>, Vec<bool>)> {
-    let found = corners(data, fitting, closed, options);
-    let k = fitting.len();
-    let mut claims = vec![0u8; k];
-    for c in &found {
-        claims[(c.vertex + k - 1) % k] += 1;
-        claims[(c.vertex + 1) % k] += 1;
-    }
-    let mut points = curve.points().to_vec();
-    let mut moved = vec![false; k];
-    for c in &found {
-        let j = c.vertex;
-        let p = points[j];
-        for (neighbour, direction) in [((j + k - 1) % k, -c.incoming), ((j + 1) % k, c.outgoing)] {
-            if fitting[neighbour].1 || claims[neighbour] > 1 || !movable(neighbour) {
-                continue;
-            }
-            let along = (points[neighbour] - p).dot(&direction);
-            let target = p + direction * along;
-            if along > 0.0 && (target - points[neighbour]).norm() <= max_move {
-                points[neighbour] = target;
-                moved[neighbour] = true;
-            }
-        }
-    }
-    if !moved.contains(&true) {
-        return None;
-    }
-    let curve = SubdivCurve::new(points, curve.kinds().to_vec(), curve.closure()).ok()?;
-    Some((curve, moved))
-}
-
-/// The corner check of a reduction step: whether the trial curve `next` (fitting points `trial`)
-/// keeps every corner's turn within [`FitOptions::corner_tolerance`] of the data's, or at least
-/// as close as the current curve `curve` (fitting points `fitting`, the same sharp vertices) has
-/// it. Always `true` when the option is `None`.
-pub(crate) fn corner_turns_kept<const D: usize>(
-    data: &[Vector<D>],
-    trial: &[(usize, bool)],
-    next: &SubdivCurve<D>,
-    fitting: &[(usize, bool)],
-    curve: &SubdivCurve<D>,
-    closed: bool,
-    options: &FitOptions,
-) -> bool {
-    let Some(bound) = options.corner_tolerance else {
-        return true;
-    };
-    let now = corners(data, fitting, closed, options);
-    corners(data, trial, closed, options)
-        .iter()
-        .zip(&now)
-        .all(|(t, c)| deviation(next, t).turn <= bound.max(deviation(curve, c).turn))
-}
-
-/// The side check of [`Reduction::Refit`](crate::Reduction::Refit)'s span fit: whether the trial
-/// curve `next` (fitting points `trial`) has the tangents of the corners at the ends of the span
-/// between data indices `start` and `end` (the span's side of each) within half of
-/// [`FitOptions::corner_tolerance`] of the data's, so that the two spans at a corner keep its turn
-/// within the bound. Always `true` when the option is `None`.
-pub(crate) fn span_sides_kept<const D: usize>(
-    data: &[Vector<D>],
-    trial: &[(usize, bool)],
-    next: &SubdivCurve<D>,
-    closed: bool,
-    options: &FitOptions,
-    (start, end): (usize, usize),
-) -> bool {
-    let Some(bound) = options.corner_tolerance else {
-        return true;
-    };
-    let n = data.len();
-    corners(data, trial, closed, options).iter().all(|c| {
-        let at = trial[c.vertex].0;
-        if at != start % n && at != end % n {
-            return true;
-        }
-        let d = deviation(next, c);
-        (at != start % n || d.outgoing <= 0.5 * bound)
-            && (at != end % n || d.incoming <= 0.5 * bound)
-    })
-}
-
-/// Inserts, next to every corner whose turn in `curve` is off by more than
-/// [`FitOptions::corner_tolerance`], a regular fitting point at the chord-length middle of the
-/// corner's segment on each side whose tangent is off by more than half of it (at least one side
-/// is: the turn's error is at most the sum of the sides'). Returns the number inserted: 0 when
-/// every corner is within the bound, the option is `None`, or the segments have no interior data.
-pub(crate) fn corner_insertions<const D: usize>(
-    data: &[Vector<D>],
-    chords: &ChordLengths,
-    fitting: &mut Vec<(usize, bool)>,
-    curve: &SubdivCurve<D>,
-    closed: bool,
-    options: &FitOptions,
-) -> usize {
-    let Some(bound) = options.corner_tolerance else {
-        return 0;
-    };
-    let n = data.len();
-    let k = fitting.len();
-    let mut new = Vec::new();
-    for corner in corners(data, fitting, closed, options) {
-        let d = deviation(curve, &corner);
-        if d.turn <= bound {
-            continue;
-        }
-        let j = corner.vertex;
-        for (off, segment) in [(d.incoming, (j + k - 1) % k), (d.outgoing, j)] {
-            if off > 0.5 * bound {
-                let (a, b) = segment_range(fitting, segment, n);
-                new.extend(chords.middle(a, b));
-            }
-        }
-    }
-    let before = fitting.len();
-    for i in new {
-        if let Err(pos) = fitting.binary_search_by_key(&i, |f| f.0) {
-            fitting.insert(pos, (i, false));
-        }
-    }
-    fitting.len() - before
 }
 
 #[cfg(test)]

@@ -136,6 +136,14 @@ pub enum SubdivFitError {
         /// Number of data points.
         points: usize,
     },
+    /// A known corner's tangent direction that cannot be used.
+    #[error("corner at data index {index}: {reason}")]
+    InvalidCornerTangent {
+        /// The corner's data index.
+        index: usize,
+        /// What is wrong with it.
+        reason: &'static str,
+    },
 }
 
 /// The best curve of a fit that did not converge ([`SubdivFitError::NoConvergence`]), with its

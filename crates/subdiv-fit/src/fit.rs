@@ -8,7 +8,8 @@ use crate::assess::{assess, assess_reusing, chord_params};
 use crate::banded::CyclicBand;
 use crate::bspline::bspline_basis;
 use crate::chord::ChordLengths;
-use crate::corner_angles::{corner_insertions, neighbours_on_tangents};
+use crate::corner::Corner;
+use crate::corner_angles::{CornerTangents, corner_insertions, neighbours_on_tangents};
 use crate::corners::detect_corners;
 use crate::curvature::feature_points;
 use crate::curve::Closure;
@@ -117,11 +118,15 @@ pub enum Reduction {
     /// [`FitOptions::mode`]) and then the same re-spacing and removal. Otherwise round 0 of the
     /// reports is the span fit. On the printable ASCII glyphs of DejaVu Sans at 10⁻³ em: 1,795
     /// control points (TrueType stores 1,797) in about 1.5 ms per glyph. With
-    /// [`FitOptions::corner_tolerance`] each trial puts the free neighbours of the span's corners
-    /// on the data's tangents (one-sided quadratic estimates) and refits the other points around
-    /// them, and a span is accepted only when its side of each end corner is within half the
-    /// bound; on the same glyphs with 0.5°: 1,905 control points in about 3.2 ms per glyph, every
-    /// kept corner within 0.38° of the outline's turn (9.29° without the bound).
+    /// [`FitOptions::corner_tolerance`] a free neighbour of a corner whose polygon edge leaves the
+    /// corner's tangent by more than half the bound after a trial's refit is constrained to a ray
+    /// at half the bound from the tangent (one unknown along it in the least-squares system) and
+    /// the points are refitted once more, and a span is accepted only when its side of each end
+    /// corner is within half the bound; on the same glyphs with the outline's exact tangents
+    /// (`fit_bez_path` (feature `kurbo`)) and
+    /// [`EXACT_CORNER_TOLERANCE`](crate::EXACT_CORNER_TOLERANCE): 1,884 control points in about
+    /// 2.5 ms per glyph, every kept corner within 0.90° of the outline's turn (9.29° without the
+    /// bound).
     Refit,
 }
 
@@ -185,12 +190,14 @@ pub struct FitOptions {
     /// configuration).
     pub reduction: Reduction,
     /// How far (radians) the turn of the curve at a kept corner may be from the data's turn there
-    /// (estimated from one-sided quadratic fits of the samples next to the corner). With a bound,
+    /// (the exact tangents of a known corner that has them, [`Corner::with_tangents`](crate::Corner),
+    /// else estimated from one-sided quadratic fits of the samples next to the corner). With a bound,
     /// the control points next to a corner are moved onto the data's tangents after each solve
     /// (see [`FitMode`]); once the distance tolerance is met, a corner still off by more (its
     /// neighbour is sharp or shared with another corner) gets fitting points inserted next to it;
     /// and the reduction refuses a step that moves a corner beyond the bound. Only sharp vertices
-    /// where the data turn by at least 20° (or the corner angle) count. Default `None` (unchecked,
+    /// where the data turn by at least 20° (or the corner angle) count, and every known corner with
+    /// tangents. Default `None` (unchecked,
     /// as in the paper); [`CORNER_TOLERANCE`](crate::CORNER_TOLERANCE) (0.5°) keeps the corners of
     /// the crate's test outline within 0.001° of the data's, and costs control points and time:
     /// on the printable ASCII glyphs of DejaVu Sans at 10⁻³ em 2,858 control points instead of
@@ -630,6 +637,59 @@ pub fn fit_with_corners<const D: usize>(
     corners: &[usize],
     options: &FitOptions,
 ) -> Result<Fit<D>, SubdivFitError> {
+    let known: Vec<Corner<D>> = corners.iter().map(|&i| Corner::new(i)).collect();
+    fit_with_known_corners(data, closure, &known, options)
+}
+
+/// [`fit_with_corners`] with known corners that may carry their exact one-sided tangents
+/// ([`Corner::with_tangents`]): with [`FitOptions::corner_tolerance`] set, the fit's turn at such
+/// a corner is bounded against these tangents instead of the data's estimate, whatever the
+/// corner's turn (corners without tangents are bounded as in [`fit_with_corners`]). With exact
+/// tangents [`EXACT_CORNER_TOLERANCE`](crate::EXACT_CORNER_TOLERANCE) (0.9°) keeps every kept
+/// corner within 1° of the outline's turn. A corner given twice takes the tangents of its first
+/// entry that has them.
+///
+/// ```
+/// use subdiv_fit::{
+///     Closure, Corner, EXACT_CORNER_TOLERANCE, FitOptions, Reduction, Vector2,
+///     fit_with_known_corners,
+/// };
+///
+/// // A half disc: the semicircle from (1, 0) to (−1, 0), then the diameter back.
+/// let mut data: Vec<Vector2> = (0..=60)
+///     .map(|k| {
+///         let t = std::f64::consts::PI * k as f64 / 60.0;
+///         Vector2::new(t.cos(), t.sin())
+///     })
+///     .collect();
+/// data.extend((1..20).map(|k| Vector2::new(-1.0 + k as f64 / 10.0, 0.0)));
+/// // At (1, 0) the diameter arrives along +x and the arc leaves along +y; at (−1, 0) the arc
+/// // arrives along −y and the diameter leaves along +x: both corners turn by 90°.
+/// let corners = [
+///     Corner::with_tangents(0, Vector2::new(1.0, 0.0), Vector2::new(0.0, 1.0))?,
+///     Corner::with_tangents(60, Vector2::new(0.0, -1.0), Vector2::new(1.0, 0.0))?,
+/// ];
+/// let opts = FitOptions::new(1e-3)
+///     .with_reduction(Reduction::Refit)
+///     .with_corner_tolerance(Some(EXACT_CORNER_TOLERANCE));
+/// let f = fit_with_known_corners(&data, Closure::Closed, &corners, &opts)?;
+/// let p = f.curve.points();
+/// let k = p.len();
+/// let j = f.fitting.iter().position(|&i| i == 60).unwrap();
+/// let (a, b) = (p[j] - p[j - 1], p[(j + 1) % k] - p[j]);
+/// let turn = a.perp(&b).atan2(a.dot(&b)).abs().to_degrees();
+/// assert!((turn - 90.0).abs() <= 0.9);
+/// # Ok::<(), subdiv_fit::SubdivFitError>(())
+/// ```
+///
+/// # Errors
+/// As [`fit_with_corners`].
+pub fn fit_with_known_corners<const D: usize>(
+    data: &[Vector<D>],
+    closure: Closure,
+    corners: &[Corner<D>],
+    options: &FitOptions,
+) -> Result<Fit<D>, SubdivFitError> {
     match fit_checked(data, closure, corners, options) {
         // The corners' bound moves control points: without it the distance alone may be met.
         Err(SubdivFitError::NoConvergence { .. }) if options.corner_tolerance.is_some() => {
@@ -639,11 +699,11 @@ pub fn fit_with_corners<const D: usize>(
     }
 }
 
-/// [`fit_with_corners`] without the retry.
+/// [`fit_with_known_corners`] without the retry.
 fn fit_checked<const D: usize>(
     data: &[Vector<D>],
     closure: Closure,
-    corners: &[usize],
+    corners: &[Corner<D>],
     options: &FitOptions,
 ) -> Result<Fit<D>, SubdivFitError> {
     let closed = closure.is_closed();
@@ -651,10 +711,13 @@ fn fit_checked<const D: usize>(
     validate_options(options)?;
     check_precision(data, options.tolerance)?;
     let n = data.len();
-    if let Some(&index) = corners.iter().find(|&&c| c >= n) {
-        return Err(SubdivFitError::CornerOutOfRange { index, points: n });
+    if let Some(c) = corners.iter().find(|c| c.index() >= n) {
+        return Err(SubdivFitError::CornerOutOfRange {
+            index: c.index(),
+            points: n,
+        });
     }
-    let mut given = corners.to_vec();
+    let mut given: Vec<usize> = corners.iter().map(Corner::index).collect();
     given.sort_unstable();
     given.dedup();
     let chords = ChordLengths::robust(data, closed, anchor_spacing(options));
@@ -695,9 +758,11 @@ fn fit_checked<const D: usize>(
             split_largest_gap(&mut fitting, n);
         }
     }
+    // The sharp fitting points stay, so the tangents of the bounded corners are found once.
+    let corner_tangents = CornerTangents::new(data, &fitting, closed, corners, options);
     let initial: Vec<usize> = fitting.iter().map(|f| f.0).collect();
     if options.reduction == Reduction::Refit
-        && let Some(direct) = span_fit(data, &chords, &fitting, closed, options)
+        && let Some(direct) = span_fit(data, &corner_tangents, &chords, &fitting, closed, options)
     {
         return Ok(Fit { initial, ..direct });
     }
@@ -709,7 +774,7 @@ fn fit_checked<const D: usize>(
     let mut round = 0;
     let mut measured = Vec::new();
     loop {
-        let curve = solve_curve(data, &fitting, closed, options)?;
+        let curve = solve_curve(data, &corner_tangents, &fitting, closed, options)?;
         let assessment = assess_reusing(data, &fitting, &curve, closed, options, &mut measured);
         reports.push(RoundReport {
             round,
@@ -731,7 +796,14 @@ fn fit_checked<const D: usize>(
             };
             let mut more = state.fitting.clone();
             if round < options.max_rounds
-                && corner_insertions(data, &chords, &mut more, &state.curve, closed, options) > 0
+                && corner_insertions(
+                    &corner_tangents,
+                    &chords,
+                    &mut more,
+                    &state.curve,
+                    n,
+                    options,
+                ) > 0
             {
                 within = Some(state);
                 fitting = more;
@@ -739,13 +811,25 @@ fn fit_checked<const D: usize>(
                 continue;
             }
             return Ok(finish(
-                data, &chords, state, initial, reports, closed, options,
+                data,
+                &corner_tangents,
+                &chords,
+                state,
+                initial,
+                reports,
+                options,
             ));
         }
         if let Some(state) = within.take() {
             reports.truncate(state.round + 1);
             return Ok(finish(
-                data, &chords, state, initial, reports, closed, options,
+                data,
+                &corner_tangents,
+                &chords,
+                state,
+                initial,
+                reports,
+                options,
             ));
         }
         if best.as_ref().is_none_or(|b| worst < b.1) {
@@ -779,6 +863,7 @@ fn fit_checked<const D: usize>(
 /// span needs more points than the search tries; the insertion loop takes over then.
 fn span_fit<const D: usize>(
     data: &[Vector<D>],
+    corners: &CornerTangents<D>,
     chords: &ChordLengths,
     seed: &[(usize, bool)],
     closed: bool,
@@ -787,7 +872,8 @@ fn span_fit<const D: usize>(
     if seed.len() > MAX_REDUCED {
         return None;
     }
-    let (mut fitting, mut curve, mut measured) = fit_spans(data, chords, seed, closed, options)?;
+    let (mut fitting, mut curve, mut measured) =
+        fit_spans(data, corners, chords, seed, closed, options)?;
     // Every segment as the span search measured it; after the removal only the changed ones.
     let a = assess_reusing(data, &fitting, &curve, closed, options, &mut measured);
     let report = |a: &crate::assess::Assessment, f: &[(usize, bool)]| RoundReport {
@@ -804,7 +890,16 @@ fn span_fit<const D: usize>(
     let mut errors = a.driven;
     let (f0, c0) = (fitting.clone(), curve.clone());
     let mut reduced = None;
-    if reduce(data, &mut fitting, &mut curve, &mut errors, closed, options) > 0 {
+    if reduce(
+        data,
+        corners,
+        &mut fitting,
+        &mut curve,
+        &mut errors,
+        closed,
+        options,
+    ) > 0
+    {
         let b = assess_reusing(data, &fitting, &curve, closed, options, &mut measured);
         if b.driven.iter().any(|&e| e > options.tolerance) {
             (fitting, curve) = (f0, c0);
@@ -832,11 +927,11 @@ struct Within<const D: usize> {
 /// The [`Fit`] of a round within the tolerance, after the reduction.
 fn finish<const D: usize>(
     data: &[Vector<D>],
+    corners: &CornerTangents<D>,
     chords: &ChordLengths,
     state: Within<D>,
     initial: Vec<usize>,
     reports: Vec<RoundReport>,
-    closed: bool,
     options: &FitOptions,
 ) -> Fit<D> {
     let Within {
@@ -848,7 +943,8 @@ fn finish<const D: usize>(
     let (curve, fitting, reduced) = match options.reduction {
         Reduction::Off => (curve, fitting, None),
         Reduction::RemovePoints | Reduction::RespaceAndRemove | Reduction::Refit => {
-            let (c, f, report) = reduced_fit(data, chords, fitting, curve, errors, closed, options);
+            let (c, f, report) =
+                reduced_fit(data, corners, chords, fitting, curve, errors, options);
             (c, f, report.map(|r| RoundReport { round, ..r }))
         }
     };
@@ -865,23 +961,24 @@ fn finish<const D: usize>(
 /// more on every segment (the converged fit is kept if that check fails).
 fn reduced_fit<const D: usize>(
     data: &[Vector<D>],
+    corners: &CornerTangents<D>,
     chords: &ChordLengths,
     fitting: Vec<(usize, bool)>,
     curve: SubdivCurve<D>,
     mut errors: Vec<f64>,
-    closed: bool,
     options: &FitOptions,
 ) -> (SubdivCurve<D>, Vec<(usize, bool)>, Option<RoundReport>) {
+    let closed = curve.is_closed();
     let (mut f, mut c) = (fitting.clone(), curve.clone());
     let respaced = if matches!(
         options.reduction,
         Reduction::RespaceAndRemove | Reduction::Refit
     ) {
-        respace_spans(data, chords, &mut f, &mut c, &mut errors, closed, options)
+        respace_spans(data, corners, chords, &mut f, &mut c, &mut errors, options)
     } else {
         0
     };
-    if reduce(data, &mut f, &mut c, &mut errors, closed, options) + respaced == 0 {
+    if reduce(data, corners, &mut f, &mut c, &mut errors, closed, options) + respaced == 0 {
         return (curve, fitting, None);
     }
     let a = assess(data, &f, &c, closed, options);
@@ -928,6 +1025,7 @@ fn split_largest_gap(fitting: &mut Vec<(usize, bool)>, n: usize) {
 /// [`FitOptions::corner_tolerance`] set, the neighbours of corners go onto the data's tangents.
 pub(crate) fn solve_curve<const D: usize>(
     data: &[Vector<D>],
+    corners: &CornerTangents<D>,
     fitting: &[(usize, bool)],
     closed: bool,
     options: &FitOptions,
@@ -968,7 +1066,7 @@ pub(crate) fn solve_curve<const D: usize>(
     match options.mode {
         FitMode::Interpolate => Ok(if options.corner_tolerance.is_some() {
             let max_move = 0.25 * options.tolerance;
-            neighbours_on_tangents(data, fitting, &curve, closed, options, max_move, |_| true)
+            neighbours_on_tangents(corners, fitting, &curve, max_move, |_| true)
                 .map_or(curve, |c| c.0)
         } else {
             curve
@@ -987,15 +1085,8 @@ pub(crate) fn solve_curve<const D: usize>(
             // A corner's tangents are the polygon edges to its neighbours: with the corner bound,
             // those move onto the data's tangents and the others are solved again around them.
             if options.corner_tolerance.is_some()
-                && let Some((on_tangents, moved)) = neighbours_on_tangents(
-                    data,
-                    fitting,
-                    &c,
-                    closed,
-                    options,
-                    f64::INFINITY,
-                    |_| true,
-                )
+                && let Some((on_tangents, moved)) =
+                    neighbours_on_tangents(corners, fitting, &c, f64::INFINITY, |_| true)
                 && let Ok(next) = least_squares(data, fitting, &on_tangents, &moved)
             {
                 c = next;

@@ -68,6 +68,7 @@ mod bspline;
 #[cfg(feature = "paper")]
 pub mod cases;
 mod chord;
+mod corner;
 mod corner_angles;
 mod corners;
 mod curvature;
@@ -79,6 +80,7 @@ mod error;
 mod fit;
 mod insertion;
 mod knots;
+mod on_rays;
 #[cfg(feature = "kurbo")]
 mod path;
 mod reduction;
@@ -91,7 +93,8 @@ mod tridiagonal;
 mod vertex;
 
 pub use crate::bspline::{bspline_basis, bspline_basis_d1, bspline_basis_d2, bspline_to_bezier};
-pub use crate::corner_angles::CORNER_TOLERANCE;
+pub use crate::corner::Corner;
+pub use crate::corner_angles::{CORNER_TOLERANCE, EXACT_CORNER_TOLERANCE};
 pub use crate::corners::SCALE_RATIO;
 pub use crate::curvature::{FeaturePoint, discrete_curvature, feature_points, turning_angle};
 pub use crate::curve::{Closure, CurvePoint, SubdivCurve};
@@ -100,7 +103,7 @@ pub use crate::error::{BestCurve, SubdivFitError};
 pub use crate::fit::{
     ErrorMeasure, Fit, FitMode, FitOptions, Insertion, MAX_DATA_COORDINATE, MAX_FEATURE_SCALE,
     MAX_FIT_POINTS, MAX_ROUNDS, MAX_SAMPLES_PER_SEGMENT, Reduction, RoundReport, Seeding, fit,
-    fit_with_corners, scaled_corners,
+    fit_with_corners, fit_with_known_corners, scaled_corners,
 };
 #[cfg(feature = "kurbo")]
 pub use crate::path::{

@@ -7,7 +7,8 @@ use kurbo::{BezPath, Point};
 
 use crate::curvature::angle_between;
 use crate::{
-    Closure, Fit, FitOptions, MAX_FIT_POINTS, SubdivCurve, SubdivFitError, fit_with_corners,
+    Closure, Corner, Fit, FitOptions, MAX_FIT_POINTS, SubdivCurve, SubdivFitError,
+    fit_with_known_corners,
 };
 
 /// A joint of a path where the tangent turns by more than this (radians, 1°) is a corner.
@@ -25,6 +26,23 @@ pub struct SampledContour {
     pub closure: Closure,
     /// Sample indices of the corners, increasing.
     pub corners: Vec<usize>,
+    /// The path's incoming and outgoing tangent directions at each corner (one per entry of
+    /// `corners`; the tangents of the segments that meet there, not normalized).
+    pub corner_tangents: Vec<(Vector2, Vector2)>,
+}
+
+impl SampledContour {
+    /// The corners with their tangents, for [`fit_with_known_corners`] (a corner whose tangents
+    /// cannot be normalized, which needs coordinates near the largest `f64`, is given without
+    /// them).
+    #[must_use]
+    pub fn known_corners(&self) -> Vec<Corner<2>> {
+        self.corners
+            .iter()
+            .zip(&self.corner_tangents)
+            .map(|(&i, &(a, b))| Corner::with_tangents(i, a, b).unwrap_or(Corner::new(i)))
+            .collect()
+    }
 }
 
 /// Samples every subpath of `path` about every `spacing` (each segment at equal parameter steps,
@@ -116,11 +134,13 @@ fn sample_subpath(sub: &[BezierCurve<2>], counts: &[usize]) -> SampledContour {
             points: Vec::new(),
             closure: Closure::Open,
             corners: Vec::new(),
+            corner_tangents: Vec::new(),
         };
     };
     let closed = first.start() == last.end() && sub.len() > 1;
     let mut points: Vec<Vector2> = Vec::new();
-    let mut corners = Vec::new();
+    let mut corners: Vec<usize> = Vec::new();
+    let mut corner_tangents: Vec<(Vector2, Vector2)> = Vec::new();
     for (j, (c, &m)) in sub.iter().zip(counts).enumerate() {
         let joint = if j > 0 {
             Some(&sub[j - 1])
@@ -136,7 +156,16 @@ fn sample_subpath(sub: &[BezierCurve<2>], counts: &[usize]) -> SampledContour {
             && let (Some(a), Some(b)) = (end_tangent(prev), start_tangent(c))
             && angle_between(&a, &b) > PATH_CORNER_ANGLE
         {
-            corners.push(points.len() - 1);
+            let index = points.len() - 1;
+            // Two joints on one sample (a segment that adds none): arriving as the first, leaving
+            // as the last.
+            match (corners.last(), corner_tangents.last_mut()) {
+                (Some(&i), Some(t)) if i == index => t.1 = b,
+                _ => {
+                    corners.push(index);
+                    corner_tangents.push((a, b));
+                }
+            }
         }
         for k in 1..m {
             if let Ok(p) = c.eval(k as f64 / m as f64)
@@ -153,11 +182,11 @@ fn sample_subpath(sub: &[BezierCurve<2>], counts: &[usize]) -> SampledContour {
     } else if points.last() != Some(&last.end()) {
         points.push(last.end());
     }
-    corners.dedup();
     SampledContour {
         points,
         closure: Closure::from_closed(closed),
         corners,
+        corner_tangents,
     }
 }
 
@@ -172,8 +201,9 @@ fn end_tangent(c: &BezierCurve<2>) -> Option<Vector2> {
     p.iter().rev().skip(1).find(|q| **q != end).map(|q| end - q)
 }
 
-/// Fits every subpath of `path` ([`fit_with_corners`] on its samples about every `tolerance`,
-/// the path's corners given as known corners) and returns the fitted curves as one path of
+/// Fits every subpath of `path` ([`fit_with_known_corners`] on its samples about every
+/// `tolerance`, the path's corners given as known corners with the path's exact tangents there, so
+/// that [`FitOptions::corner_tolerance`] bounds the turns against the outline itself) and returns the fitted curves as one path of
 /// cubic Bézier segments, with the fits. Subpaths with fewer than 3 samples are left out.
 ///
 /// ```
@@ -189,7 +219,7 @@ fn end_tangent(c: &BezierCurve<2>) -> Option<Vector2> {
 /// ```
 ///
 /// # Errors
-/// As [`sample_bez_path`] and [`fit_with_corners`].
+/// As [`sample_bez_path`] and [`fit_with_known_corners`].
 pub fn fit_bez_path(
     path: &BezPath,
     options: &FitOptions,
@@ -200,7 +230,8 @@ pub fn fit_bez_path(
         if contour.points.len() < 3 {
             continue;
         }
-        let f = fit_with_corners(&contour.points, contour.closure, &contour.corners, options)?;
+        let known = contour.known_corners();
+        let f = fit_with_known_corners(&contour.points, contour.closure, &known, options)?;
         for el in f.curve.to_bez_path()?.elements() {
             out.push(*el);
         }

@@ -18,7 +18,7 @@ use bez_core::Vector;
 use crate::SubdivCurve;
 use crate::assess::{Measured, assess_segment};
 use crate::chord::ChordLengths;
-use crate::corner_angles::{corner_turns_kept, neighbours_on_tangents, span_sides_kept};
+use crate::corner_angles::{CornerTangents, cone_rays, corner_turns_kept, span_sides_kept};
 use crate::fit::{FitMode, FitOptions, Reduction, solve_curve};
 use crate::insertion::segment_range;
 use crate::refit::refit;
@@ -50,6 +50,7 @@ const PASSES: usize = 2;
 /// updated) stays within the tolerance; returns the number removed.
 pub(crate) fn reduce<const D: usize>(
     data: &[Vector<D>],
+    corners: &CornerTangents<D>,
     fitting: &mut Vec<(usize, bool)>,
     curve: &mut SubdivCurve<D>,
     errors: &mut Vec<f64>,
@@ -94,7 +95,7 @@ pub(crate) fn reduce<const D: usize>(
             if options.reduction == Reduction::Refit && unchanged {
                 continue;
             }
-            if let Some(new_errors) = try_removal(data, fitting, curve, errors, closed, options, j)
+            if let Some(new_errors) = try_removal(data, corners, fitting, curve, errors, options, j)
             {
                 fitting.remove(j);
                 (*curve, *errors) = new_errors;
@@ -155,13 +156,14 @@ impl SpanIndex {
 /// stops as soon as the error exceeds the tolerance.
 fn try_removal<const D: usize>(
     data: &[Vector<D>],
+    corners: &CornerTangents<D>,
     fitting: &[(usize, bool)],
     curve: &SubdivCurve<D>,
     errors: &[f64],
-    closed: bool,
     options: &FitOptions,
     j: usize,
 ) -> Option<(SubdivCurve<D>, Vec<f64>)> {
+    let closed = curve.is_closed();
     let tol = options.tolerance;
     let k = fitting.len();
     let mut trial = fitting.to_vec();
@@ -170,7 +172,7 @@ fn try_removal<const D: usize>(
     let next = if options.reduction == Reduction::Refit {
         // The points around the merged segment, from the interpolating solution, refitted by
         // least squares with every other point where it was.
-        let interp = solve_curve(data, &trial, closed, &interpolating(options)).ok()?;
+        let interp = solve_curve(data, corners, &trial, closed, &interpolating(options)).ok()?;
         let mut points: Vec<Vector<D>> = curve.points().to_vec();
         points.remove(j);
         let mut free = Vec::new();
@@ -190,9 +192,9 @@ fn try_removal<const D: usize>(
             }
         }
         let guess = SubdivCurve::new(points, interp.kinds().to_vec(), curve.closure()).ok()?;
-        refit(data, &trial, guess, &free)?
+        refit_near_corners(data, corners, &trial, guess, &free, options)?
     } else {
-        solve_curve(data, &trial, closed, options).ok()?
+        solve_curve(data, corners, &trial, closed, options).ok()?
     };
     // Old vertex of trial vertex t.
     let old = |t: usize| if t < j { t } else { t + 1 };
@@ -230,7 +232,7 @@ fn try_removal<const D: usize>(
             return None;
         }
     }
-    if !corner_turns_kept(data, &trial, &next, fitting, curve, closed, options) {
+    if !corner_turns_kept(corners, &trial, &next, fitting, curve, options) {
         return None;
     }
     let mut window: Vec<usize> = (0..segs2).filter(|&s| measured(s)).collect();
@@ -277,13 +279,14 @@ impl Spacing {
 /// ring.
 pub(crate) fn respace_spans<const D: usize>(
     data: &[Vector<D>],
+    corners: &CornerTangents<D>,
     chords: &ChordLengths,
     fitting: &mut Vec<(usize, bool)>,
     curve: &mut SubdivCurve<D>,
     errors: &mut Vec<f64>,
-    closed: bool,
     options: &FitOptions,
 ) -> usize {
+    let closed = curve.is_closed();
     let n = data.len();
     if fitting.len() > MAX_REDUCED {
         return 0;
@@ -305,7 +308,9 @@ pub(crate) fn respace_spans<const D: usize>(
             if trial.len() < if closed { 3 } else { 2 } {
                 continue;
             }
-            if let Some((c, e)) = try_trial(data, &trial, fitting, curve, errors, options, inside) {
+            if let Some((c, e)) = try_trial(
+                data, corners, &trial, fitting, curve, errors, options, inside,
+            ) {
                 removed += fitting.len() - trial.len();
                 *fitting = trial;
                 *curve = c;
@@ -380,6 +385,7 @@ fn strictly_inside(i: usize, (a, b): (usize, usize), n: usize) -> bool {
 /// segments of a span stay bit for bit what they were while the other spans are fitted.
 pub(crate) fn fit_spans<const D: usize>(
     data: &[Vector<D>],
+    corners: &CornerTangents<D>,
     chords: &ChordLengths,
     seed: &[(usize, bool)],
     closed: bool,
@@ -393,7 +399,7 @@ pub(crate) fn fit_spans<const D: usize>(
         fitting[0].1 = true;
         fitting[last].1 = true;
     }
-    let mut curve = solve_curve(data, &fitting, closed, &interpolating(options)).ok()?;
+    let mut curve = solve_curve(data, corners, &fitting, closed, &interpolating(options)).ok()?;
     let mut measured = Vec::new();
     for span in spans(&fitting, n, closed) {
         let inside = |i: usize| strictly_inside(i, span, n);
@@ -409,8 +415,8 @@ pub(crate) fn fit_spans<const D: usize>(
                         return None;
                     }
                     let next =
-                        respaced_refit(data, &trial, &fitting, &curve, closed, options, inside)?;
-                    if !span_sides_kept(data, &trial, &next, closed, options, span) {
+                        respaced_refit(data, corners, &trial, &fitting, &curve, options, inside)?;
+                    if !span_sides_kept(corners, &trial, &next, options, n, span) {
                         return None;
                     }
                     let segs = next.segment_count();
@@ -470,14 +476,18 @@ fn lowest_count(seeded: usize) -> usize {
 /// Points beyond its initial count that [`fit_spans`] tries in a span before leaving the fit to
 /// the insertion loop.
 const EXTRA_POINTS: usize = 6;
-
 /// The curve of the fitting points `trial` with an upper bound of each segment error, or `None`
 /// when the system cannot be solved or a segment's error exceeds the tolerance. A segment between
 /// the same two data points as one of the current curve (`fitting`, `curve`, `errors`) moved by
 /// at most the largest displacement of its four control points (the basis functions are
 /// non-negative and sum to 1), which is added to its old error; the others are measured.
+#[expect(
+    clippy::too_many_arguments,
+    reason = "the data with their corners, the trial, the current state (points, curve, errors) and the span"
+)]
 fn try_trial<const D: usize>(
     data: &[Vector<D>],
+    corners: &CornerTangents<D>,
     trial: &[(usize, bool)],
     fitting: &[(usize, bool)],
     curve: &SubdivCurve<D>,
@@ -488,11 +498,11 @@ fn try_trial<const D: usize>(
     let tol = options.tolerance;
     let closed = curve.is_closed();
     let next = if options.reduction == Reduction::Refit {
-        respaced_refit(data, trial, fitting, curve, closed, options, inside)?
+        respaced_refit(data, corners, trial, fitting, curve, options, inside)?
     } else {
-        solve_curve(data, trial, closed, options).ok()?
+        solve_curve(data, corners, trial, closed, options).ok()?
     };
-    if !corner_turns_kept(data, trial, &next, fitting, curve, closed, options) {
+    if !corner_turns_kept(corners, trial, &next, fitting, curve, options) {
         return None;
     }
     let (k, k2) = (fitting.len(), trial.len());
@@ -538,14 +548,15 @@ fn try_trial<const D: usize>(
 /// least squares; the others stay where `curve` (of `fitting`) has them.
 fn respaced_refit<const D: usize>(
     data: &[Vector<D>],
+    corners: &CornerTangents<D>,
     trial: &[(usize, bool)],
     fitting: &[(usize, bool)],
     curve: &SubdivCurve<D>,
-    closed: bool,
     options: &FitOptions,
     inside: impl Fn(usize) -> bool,
 ) -> Option<SubdivCurve<D>> {
-    let interp = solve_curve(data, trial, closed, &interpolating(options)).ok()?;
+    let closed = curve.is_closed();
+    let interp = solve_curve(data, corners, trial, closed, &interpolating(options)).ok()?;
     let mut points = interp.points().to_vec();
     let mut free = Vec::new();
     for (t, f) in trial.iter().enumerate() {
@@ -561,19 +572,34 @@ fn respaced_refit<const D: usize>(
         free.rotate_left(cut);
     }
     let guess = SubdivCurve::new(points, interp.kinds().to_vec(), curve.closure()).ok()?;
-    let fitted = refit(data, trial, guess, &free)?;
-    // With a corner bound, the free neighbours of the corners go onto the data's tangents and the
-    // other free points are refitted around them (the corner's turn is its polygon's turn).
-    if options.corner_tolerance.is_some()
-        && let Some((placed, moved)) =
-            neighbours_on_tangents(data, trial, &fitted, closed, options, f64::INFINITY, |v| {
-                free.contains(&v)
-            })
-    {
-        let rest: Vec<usize> = free.iter().copied().filter(|&v| !moved[v]).collect();
-        return refit(data, trial, placed, &rest);
+    refit_near_corners(data, corners, trial, guess, &free, options)
+}
+
+/// The refit of the control points `free` of `guess` (fitting points `trial`) for
+/// [`Reduction::Refit`]; with [`FitOptions::corner_tolerance`] set, a free neighbour of a corner
+/// whose polygon edge then leaves the corner's tangent by more than half the bound (a corner's
+/// turn is its polygon's turn, and each side has half of the bound) is constrained to the nearest
+/// edge of the cone within that angle and the points are refitted once more, each constrained one
+/// optimal along its ray ([`cone_rays`]).
+fn refit_near_corners<const D: usize>(
+    data: &[Vector<D>],
+    corners: &CornerTangents<D>,
+    trial: &[(usize, bool)],
+    guess: SubdivCurve<D>,
+    free: &[usize],
+    options: &FitOptions,
+) -> Option<SubdivCurve<D>> {
+    let fitted = refit(data, trial, guess, free, &[])?;
+    let Some(bound) = options.corner_tolerance else {
+        return Some(fitted);
+    };
+    // Just inside half the bound, so that the side check passes despite rounding.
+    let slack = (0.5 * bound).min(1.5) * (1.0 - 1e-6);
+    let rays = cone_rays(corners, trial, &fitted, slack, |v| free.contains(&v));
+    if rays.is_empty() {
+        return Some(fitted);
     }
-    Some(fitted)
+    refit(data, trial, fitted, free, &rays)
 }
 
 #[cfg(test)]
@@ -581,6 +607,7 @@ mod tests {
     use super::{Spacing, SpanIndex, fit_spans, lowest_count};
     use crate::assess::{assess, assess_reusing};
     use crate::chord::ChordLengths;
+    use crate::corner_angles::CornerTangents;
     use crate::{FitOptions, Reduction, Vector2, VertexKind};
 
     /// Spans by the sharp points at data indices 10, 40, 55, 70 (a closed polygon): a point after
@@ -651,7 +678,8 @@ mod tests {
         let chords = ChordLengths::robust(&data, true, 1.5e-2);
         let mut seed: Vec<(usize, bool)> = (0..8).map(|m| (10 * m, m == 0)).collect();
         seed.push((80, true));
-        let (fitting, curve, mut measured) = fit_spans(&data, &chords, &seed, true, &opts).unwrap();
+        let (fitting, curve, mut measured) =
+            fit_spans(&data, &CornerTangents::none(), &chords, &seed, true, &opts).unwrap();
         assert_eq!(measured.len(), curve.segment_count());
         assert!(fitting.len() > 3);
         let full = assess(&data, &fitting, &curve, true, &opts);

@@ -14,9 +14,11 @@ use bez_core::Vector;
 use crate::SubdivCurve;
 use crate::banded::CyclicBand;
 use crate::bspline::bspline_basis;
+use crate::corner_angles::Ray;
 use crate::distance::PowerCubic;
 use crate::fit::segment_weights;
 use crate::insertion::segment_range;
+use crate::on_rays::{RayColumn, solve_on_rays};
 
 /// Data points per segment that the refit uses at most (evenly strided, both ends included): the
 /// least-squares control points of a few dozen points of a segment are those of all of them to
@@ -51,12 +53,15 @@ pub(crate) fn shaped_segments<const D: usize>(
 /// `guess` with its control points `free` (regular vertices, in polygon order, consecutive ones at
 /// most 3 apart or wrapping round a closed polygon) refitted by least squares to the data of the
 /// segments they shape ([`ITERATIONS`] times), the other control points fixed. `None` when the
-/// system is singular (a free point without data) or the result not finite.
+/// system is singular (a free point without data) or the result not finite. The free control
+/// points of `rays` are constrained to them (one unknown each along its ray, solved with the
+/// others: [`solve_on_rays`]); `None` also when a ray's vertex is not free.
 pub(crate) fn refit<const D: usize>(
     data: &[Vector<D>],
     fitting: &[(usize, bool)],
     guess: SubdivCurve<D>,
     free: &[usize],
+    rays: &[Ray<D>],
 ) -> Option<SubdivCurve<D>> {
     let n = data.len();
     let k = guess.points().len();
@@ -153,7 +158,17 @@ pub(crate) fn refit<const D: usize>(
                 }
             }
         }
-        let sol = ata.solve(&atb)?;
+        let on_rays: Vec<RayColumn<D>> = rays
+            .iter()
+            .map(|r| {
+                Some(RayColumn {
+                    column: column[r.vertex]?,
+                    anchor: r.anchor.into(),
+                    direction: r.direction.into(),
+                })
+            })
+            .collect::<Option<_>>()?;
+        let (sol, _) = solve_on_rays(&ata, &atb, &on_rays)?;
         let mut points = curve.points().to_vec();
         for (&v, p) in free.iter().zip(&sol) {
             points[v] = Vector::<D>::from(*p);
@@ -226,7 +241,7 @@ mod tests {
     fn refit_recovers_the_control_points_of_exact_data() {
         let (curve, data, fitting) = truth();
         let free = [2, 3, 5];
-        let same = refit(&data, &fitting, curve.clone(), &free).unwrap();
+        let same = refit(&data, &fitting, curve.clone(), &free, &[]).unwrap();
         for v in 0..curve.points().len() {
             assert!((same.points()[v] - curve.points()[v]).norm() < 1e-9, "{v}");
         }
@@ -237,7 +252,7 @@ mod tests {
         let guess = SubdivCurve::new(points, curve.kinds().to_vec(), Closure::Open).unwrap();
         let shaped = shaped_segments(&guess, &free);
         assert_eq!(shaped, [0, 1, 2, 3, 4, 5, 6]);
-        let fitted = refit(&data, &fitting, guess.clone(), &free).unwrap();
+        let fitted = refit(&data, &fitting, guess.clone(), &free, &[]).unwrap();
         let (before, after) = (
             max_distance(&guess, &data, &fitting),
             max_distance(&fitted, &data, &fitting),
@@ -256,7 +271,10 @@ mod tests {
     #[test]
     fn refit_rejects_sharp_points_and_keeps_the_guess_without_free_points() {
         let (curve, data, fitting) = truth();
-        assert!(refit(&data, &fitting, curve.clone(), &[4]).is_none());
-        assert_eq!(refit(&data, &fitting, curve.clone(), &[]).unwrap(), curve);
+        assert!(refit(&data, &fitting, curve.clone(), &[4], &[]).is_none());
+        assert_eq!(
+            refit(&data, &fitting, curve.clone(), &[], &[]).unwrap(),
+            curve
+        );
     }
 }

@@ -12,12 +12,13 @@ use std::time::{Duration, Instant};
 use bez_core::{BezierForm, MAX_COORDINATE};
 use proptest::prelude::*;
 use subdiv_fit::{
-    BestCurve, CORNER_TOLERANCE, Closure, CurvePoint, ErrorMeasure, FeaturePoint, Fit, FitMode,
-    FitOptions, Insertion, MAX_DATA_COORDINATE, MAX_FEATURE_SCALE, MAX_FIT_POINTS, MAX_REDUCED,
-    MAX_ROUNDS, MAX_SAMPLES_PER_SEGMENT, Reduction, RoundReport, SCALE_RATIO, Seeding, Segment,
-    SubdivCurve, SubdivFitError, Vector2, Vector3, VertexKind, bspline_basis, bspline_basis_d1,
-    bspline_basis_d2, bspline_to_bezier, discrete_curvature, feature_points, fit, fit_with_corners,
-    foot_point, point_polyline_distance, scaled_corners, svg_path, turning_angle,
+    BestCurve, CORNER_TOLERANCE, Closure, Corner, CurvePoint, EXACT_CORNER_TOLERANCE, ErrorMeasure,
+    FeaturePoint, Fit, FitMode, FitOptions, Insertion, MAX_DATA_COORDINATE, MAX_FEATURE_SCALE,
+    MAX_FIT_POINTS, MAX_REDUCED, MAX_ROUNDS, MAX_SAMPLES_PER_SEGMENT, Reduction, RoundReport,
+    SCALE_RATIO, Seeding, Segment, SubdivCurve, SubdivFitError, Vector2, Vector3, VertexKind,
+    bspline_basis, bspline_basis_d1, bspline_basis_d2, bspline_to_bezier, discrete_curvature,
+    feature_points, fit, fit_with_corners, fit_with_known_corners, foot_point,
+    point_polyline_distance, scaled_corners, svg_path, turning_angle,
 };
 
 fn wild() -> impl Strategy<Value = f64> {
@@ -308,12 +309,25 @@ proptest! {
         opts in options(),
         closed in any::<bool>(),
         corners in proptest::collection::vec(prop_oneof![0usize..70, Just(usize::MAX)], 0..4),
+        tangents in proptest::collection::vec((wild(), wild(), wild(), wild()), 4),
     ) {
         let closure = Closure::from_closed(closed);
         let n = data.len();
         let start = Instant::now();
         check_fit(&fit(&data, closure, &opts), n)?;
         check_fit(&fit_with_corners(&data, closure, &corners, &opts), n)?;
+        // The same corners with wild tangents (the invalid ones given without), and the bound
+        // that exact tangents allow.
+        let known: Vec<Corner<2>> = corners
+            .iter()
+            .zip(&tangents)
+            .map(|(&i, &(a, b, c, d))| {
+                Corner::with_tangents(i, Vector2::new(a, b), Vector2::new(c, d))
+                    .unwrap_or(Corner::new(i))
+            })
+            .collect();
+        let bounded = opts.with_corner_tolerance(Some(EXACT_CORNER_TOLERANCE));
+        check_fit(&fit_with_known_corners(&data, closure, &known, &bounded), n)?;
         if let Ok(found) = scaled_corners(&data, closure, &opts) {
             prop_assert!(found.windows(2).all(|w| w[0] < w[1]) && found.iter().all(|&i| i < n));
         }
@@ -411,10 +425,67 @@ mod paths {
         }
         let square = sample_svg_path("M0 0 H1 V1 H0 Z", 0.25).unwrap();
         assert_eq!(square[0].corners, [0, 4, 8, 12]);
+        // The path's own tangents at the corners: arriving down the left side at (0, 0), leaving
+        // along the bottom.
+        assert_eq!(square[0].corner_tangents.len(), 4);
+        let known = square[0].known_corners();
+        assert_eq!(known[0].index(), 0);
+        assert_eq!(
+            known[0].tangents(),
+            Some((Vector2::new(0.0, -1.0), Vector2::new(1.0, 0.0)))
+        );
         const { assert!(PATH_CORNER_ANGLE < 0.1) };
         let c = SubdivCurve::smooth(square[0].points.clone(), Closure::Closed).unwrap();
         assert_eq!(c.to_bez_path().unwrap().segments().count(), 16);
     }
+}
+
+/// Corner tangents must be finite and non-zero (typed errors naming the corner); any other length,
+/// huge or subnormal, is normalized; a corner index outside the data is refused by the fit.
+#[test]
+fn corner_tangents_are_validated() {
+    let up = Vector2::new(0.0, 1.0);
+    for bad in [
+        Vector2::new(0.0, 0.0),
+        Vector2::new(f64::NAN, 1.0),
+        Vector2::new(1.0, f64::INFINITY),
+        Vector2::new(-0.0, 0.0),
+    ] {
+        for (a, b) in [(bad, up), (up, bad)] {
+            assert!(matches!(
+                Corner::with_tangents(5, a, b),
+                Err(SubdivFitError::InvalidCornerTangent { index: 5, .. })
+            ));
+        }
+    }
+    for (v, unit) in [
+        (
+            Vector2::new(1e300, -1e300),
+            Vector2::new(1.0, -1.0) / 2f64.sqrt(),
+        ),
+        (Vector2::new(0.0, 5e-324), up),
+        (
+            Vector2::new(f64::MAX, f64::MAX),
+            Vector2::new(1.0, 1.0) / 2f64.sqrt(),
+        ),
+    ] {
+        let c = Corner::with_tangents(2, v, up).unwrap();
+        assert_eq!(c.index(), 2);
+        let (a, b) = c.tangents().unwrap();
+        assert!((a - unit).norm() < 1e-15 && b == up, "{a:?}");
+    }
+    assert_eq!(Corner::<2>::new(3).tangents(), None);
+    let data: Vec<Vector2> = (0..40)
+        .map(|k| Vector2::new(k as f64, (k as f64 * 0.3).sin()))
+        .collect();
+    let far = Corner::with_tangents(40, up, up).unwrap();
+    assert!(matches!(
+        fit_with_known_corners(&data, Closure::Open, &[far], &FitOptions::new(1e-3)),
+        Err(SubdivFitError::CornerOutOfRange {
+            index: 40,
+            points: 40
+        })
+    ));
 }
 
 /// Sizes the caller chooses are refused before any work, quickly.
@@ -563,6 +634,23 @@ fn invariant_violating_json_is_refused() {
     let bounded = FitOptions::new(1e-3).with_corner_tolerance(Some(CORNER_TOLERANCE));
     let read: FitOptions = serde_json::from_value(serde_json::to_value(bounded).unwrap()).unwrap();
     assert_eq!(read, bounded);
+    // Known corners: tangents validated as by `Corner::with_tangents`, a valid one round-trips.
+    for bad in [
+        r#"{"index":1,"tangents":[[0,0],[1,0]]}"#,
+        r#"{"index":1,"tangents":[[1e999,0],[1,0]]}"#,
+        r#"{"index":1,"tangents":[[1,0]]}"#,
+        r#"{"index":-1}"#,
+        r#"{"tangents":null}"#,
+    ] {
+        assert!(serde_json::from_str::<Corner<2>>(bad).is_err(), "{bad}");
+    }
+    let c = Corner::with_tangents(4, Vector2::new(3.0, 4.0), Vector2::new(0.0, -2.0)).unwrap();
+    let read: Corner<2> = serde_json::from_str(&serde_json::to_string(&c).unwrap()).unwrap();
+    // Normalized again on reading: equal up to rounding.
+    let ((a, b), (a2, b2)) = (c.tangents().unwrap(), read.tangents().unwrap());
+    assert!(read.index() == 4 && (a - a2).norm() < 1e-15 && (b - b2).norm() < 1e-15);
+    let plain: Corner<2> = serde_json::from_str(r#"{"index":7}"#).unwrap();
+    assert_eq!(plain, Corner::new(7));
 }
 
 bez_core::suite_completeness_tests!();

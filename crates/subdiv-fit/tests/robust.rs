@@ -2,8 +2,9 @@
 #![allow(clippy::unwrap_used, reason = "tests fail loudly")]
 
 use subdiv_fit::{
-    CORNER_TOLERANCE, Closure, FitMode, FitOptions, MAX_SAMPLES_PER_SEGMENT, Reduction,
-    SubdivFitError, Vector2, fit, fit_with_corners, point_polyline_distance, scaled_corners,
+    CORNER_TOLERANCE, Closure, Corner, EXACT_CORNER_TOLERANCE, FitMode, FitOptions,
+    MAX_SAMPLES_PER_SEGMENT, Reduction, SubdivFitError, Vector2, fit, fit_with_corners,
+    fit_with_known_corners, point_polyline_distance, scaled_corners,
 };
 
 /// A deterministic uniform generator in [-1, 1].
@@ -379,5 +380,95 @@ fn refit_keeps_the_exact_turns_of_a_stem_and_a_bowl() {
         }
         let r = f.last().unwrap();
         assert!(r.max_data_to_curve <= 1e-3 && r.max_curve_to_data <= 1e-3);
+    }
+}
+
+/// With the corners' exact tangents given (`Corner::with_tangents`, the stem's direction and the
+/// cubic's end tangents), `Reduction::Refit` with `EXACT_CORNER_TOLERANCE` keeps every corner of
+/// the stem-and-bowl outlines within that bound (0.9°) of its exact turn, within the tolerance;
+/// the other reductions bound the same tangents within 1°.
+#[test]
+fn exact_tangents_keep_the_turns_within_the_bound() {
+    let base = FitOptions::new(1e-3).with_corner_tolerance(Some(EXACT_CORNER_TOLERANCE));
+    let up = Vector2::new(0.0, 1.0);
+    for (b1, b2) in [
+        (Vector2::new(0.8, 1.0), Vector2::new(0.8, 0.0)),
+        (Vector2::new(1.2, 0.9), Vector2::new(0.2, -0.3)),
+        (Vector2::new(0.3, 1.4), Vector2::new(1.1, 0.1)),
+    ] {
+        let (data, corners, exact) = stem_and_bowl(b1, b2);
+        // At the bottom the bowl arrives along (0, 0) − b2 and the stem leaves upwards; at the
+        // top the stem arrives upwards and the bowl leaves along b1 − (0, 1).
+        let known = [
+            Corner::with_tangents(corners[0], Vector2::new(0.0, 0.0) - b2, up).unwrap(),
+            Corner::with_tangents(corners[1], up, b1 - up).unwrap(),
+        ];
+        for (reduction, bound) in [
+            (Reduction::Refit, EXACT_CORNER_TOLERANCE.to_degrees() + 1e-9),
+            (Reduction::RemovePoints, 1.0),
+            (Reduction::RespaceAndRemove, 1.0),
+        ] {
+            let opts = base.with_reduction(reduction);
+            let f = fit_with_known_corners(&data, Closure::Closed, &known, &opts).unwrap();
+            for (c, exact) in corners.iter().zip(exact) {
+                let j = f.fitting.iter().position(|&i| i == *c).unwrap();
+                assert!(f.curve.is_sharp(j));
+                let error = (polygon_turn(f.curve.points(), j) - exact).abs();
+                assert!(
+                    error <= bound,
+                    "{b1:?} {b2:?} {reduction:?} corner {c}: {error}°"
+                );
+            }
+            let r = f.last().unwrap();
+            assert!(r.max_data_to_curve <= 1e-3 && r.max_curve_to_data <= 1e-3);
+        }
+    }
+}
+
+/// `fit_bez_path` passes a path's own tangents at its corners: with `Reduction::Refit` and
+/// `EXACT_CORNER_TOLERANCE` every corner of an outline of a line, a quadratic, a cubic and the
+/// closing line keeps its turn within 0.9° of the path's, computed independently from kurbo's
+/// segment derivatives at the joints, and the fit stays within the tolerance of the samples.
+#[cfg(feature = "kurbo")]
+#[test]
+fn fit_bez_path_keeps_the_paths_corner_turns() {
+    use kurbo::{ParamCurve, ParamCurveDeriv, PathSeg};
+    let path =
+        kurbo::BezPath::from_svg("M0 0 L1 0 Q1.3 0.6 0.6 1 C0.3 1.2 -0.1 0.9 0.1 0.4 Z").unwrap();
+    let segs: Vec<PathSeg> = path.segments().collect();
+    let deriv = |s: &PathSeg, t: f64| match s {
+        PathSeg::Line(l) => l.deriv().eval(t).to_vec2(),
+        PathSeg::Quad(q) => q.deriv().eval(t).to_vec2(),
+        PathSeg::Cubic(c) => c.deriv().eval(t).to_vec2(),
+    };
+    let joints: Vec<(kurbo::Point, f64)> = (0..segs.len())
+        .map(|i| {
+            let (a, b) = (segs[i], segs[(i + 1) % segs.len()]);
+            let (u, v) = (deriv(&a, 1.0), deriv(&b, 0.0));
+            (b.eval(0.0), u.cross(v).atan2(u.dot(v)).to_degrees().abs())
+        })
+        .collect();
+    let tol = 1e-3;
+    let opts = FitOptions::new(tol)
+        .with_reduction(Reduction::Refit)
+        .with_corner_tolerance(Some(EXACT_CORNER_TOLERANCE));
+    let (_, fits) = subdiv_fit::fit_bez_path(&path, &opts).unwrap();
+    assert_eq!(fits.len(), 1);
+    let f = &fits[0];
+    let r = f.last().unwrap();
+    assert!(
+        r.max_data_to_curve <= tol && r.max_curve_to_data <= tol,
+        "{r:?}"
+    );
+    let p = f.curve.points();
+    for (at, exact) in joints {
+        let j = (0..p.len())
+            .find(|&j| f.curve.is_sharp(j) && (p[j].x() - at.x).hypot(p[j].y() - at.y) < 1e-12)
+            .unwrap();
+        let error = (polygon_turn(p, j) - exact).abs();
+        assert!(
+            error <= EXACT_CORNER_TOLERANCE.to_degrees() + 1e-9,
+            "{at:?}: {error}°"
+        );
     }
 }

@@ -13,7 +13,7 @@ use kurbo::{
     Affine, BezPath, ParamCurve, ParamCurveArclen, ParamCurveNearest, PathEl, PathSeg, Point, Vec2,
 };
 use serde_json::{Value, json};
-use subdiv_fit::{CORNER_TOLERANCE, FitMode, FitOptions, Reduction, Vector2, fit_bez_path};
+use subdiv_fit::{EXACT_CORNER_TOLERANCE, FitMode, FitOptions, Reduction, Vector2, fit_bez_path};
 
 use crate::DynError;
 use crate::tables::Table;
@@ -207,10 +207,10 @@ fn configurations(tol: f64) -> [(&'static str, FitOptions); 6] {
             interp.with_reduction(Reduction::Refit),
         ),
         (
-            "subdiv-fit, least-squares refit of the spans, corner bound 0.5°",
+            "subdiv-fit, least-squares refit of the spans, corner bound 0.9° (exact tangents)",
             interp
                 .with_reduction(Reduction::Refit)
-                .with_corner_tolerance(Some(CORNER_TOLERANCE)),
+                .with_corner_tolerance(Some(EXACT_CORNER_TOLERANCE)),
         ),
     ]
 }

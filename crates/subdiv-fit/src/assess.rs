@@ -8,7 +8,7 @@ use crate::SubdivCurve;
 use crate::bspline::bspline_basis;
 use crate::curve::combine;
 use crate::distance::{PowerCubic, curve_to_polyline};
-use crate::fit::{ErrorMeasure, FitOptions};
+use crate::fit::{ErrorMeasure, FitOptions, Reduction};
 use crate::insertion::{Verdict, segment_range};
 
 /// Chord-length parameters of data a..=b (indices mod n), the paper's Newton start (Sec. 5).
@@ -79,7 +79,9 @@ impl SegmentErrors {
 }
 
 /// Errors of segment `j`: each data point of the segment against it by Newton on eq. (6) from
-/// its chord-length parameter, and dense curve samples against the segment's data polyline.
+/// its chord-length parameter (with [`Reduction::Refit`] from the previous point's foot point,
+/// which needs fewer steps; any start gives the distance to a point of the segment, never below
+/// the distance to the segment), and dense curve samples against the segment's data polyline.
 ///
 /// The measurement stops as soon as the driven error exceeds `cap` (the errors are then lower
 /// bounds, enough to reject the segment); with `cap` = ∞ every error is exact.
@@ -109,17 +111,27 @@ pub(crate) fn assess_segment<const D: usize>(
         };
     };
     let poly = segment_polyline(data, a, b);
-    let chord = polyline_params(&poly);
+    // Newton's start: the paper's chord-length parameter, or with `Reduction::Refit` 0 for the
+    // segment's first data point (its fitting point) and then a step along the tangent from the
+    // previous point's foot point (`PowerCubic::start_after`).
+    let chord = (options.reduction != Reduction::Refit).then(|| polyline_params(&poly));
     let cubic = PowerCubic::new(&ctrl);
     let (mut seg_max, mut seg_arg, mut sum2, mut count) = (0.0_f64, None, 0.0, 0);
-    for (off, (t0, v)) in chord.iter().zip(poly.iter()).enumerate() {
+    let mut t = 0.0;
+    for (off, v) in poly.iter().enumerate() {
         // The segment's end data points are counted once, by the segment that starts there
         // (for open data the last point also by the last segment).
-        let last_of_open = !closed && j + 1 == segs && off + 1 == chord.len();
-        if off + 1 == chord.len() && !last_of_open {
+        let last_of_open = !closed && j + 1 == segs && off + 1 == poly.len();
+        if off + 1 == poly.len() && !last_of_open {
             continue;
         }
-        let (_, d) = cubic.foot(v, *t0);
+        let t0 = match &chord {
+            Some(chord) => chord[off],
+            None if off == 0 => 0.0,
+            None => cubic.start_after(t, &poly[off - 1], v),
+        };
+        let d;
+        (t, d) = cubic.foot(v, t0);
         sum2 += d * d;
         count += 1;
         if d > seg_max {

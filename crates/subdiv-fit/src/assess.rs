@@ -177,6 +177,47 @@ pub(crate) fn assess_segment<const D: usize>(
     }
 }
 
+/// Data points between two of [`subsample_exceeds`]'s samples.
+pub(crate) const COARSE_STRIDE: usize = 8;
+
+/// Whether one of every [`COARSE_STRIDE`]-th data point of segment `j` (from its first, the end
+/// point left to the next segment) is farther than `tol` from the segment (Newton on eq. (6), each
+/// from a step along the tangent after the previous one, as [`assess_segment`] with
+/// [`Reduction::Refit`]): a first look at a trial before it is measured in full, which rejects
+/// most failing trials at an eighth of the cost. Distances of points of the segment, as those of
+/// [`assess_segment`], so it rejects what the full measurement would reject from the same points.
+pub(crate) fn subsample_exceeds<const D: usize>(
+    data: &[Vector<D>],
+    fitting: &[(usize, bool)],
+    curve: &SubdivCurve<D>,
+    j: usize,
+    tol: f64,
+) -> bool {
+    let n = data.len();
+    let (a, b) = segment_range(fitting, j, n);
+    let Ok(ctrl) = curve.segment_controls(j) else {
+        return false;
+    };
+    let cubic = PowerCubic::new(&ctrl);
+    let at = |off: usize| data[if a + off < n { a + off } else { a + off - n }];
+    let (mut t, mut previous) = (0.0, at(0));
+    for off in (0..b - a).step_by(COARSE_STRIDE) {
+        let v = at(off);
+        let t0 = if off == 0 {
+            0.0
+        } else {
+            cubic.start_after(t, &previous, &v)
+        };
+        let d;
+        (t, d) = cubic.foot(&v, t0);
+        if d > tol {
+            return true;
+        }
+        previous = v;
+    }
+    false
+}
+
 /// One segment's errors with what they were measured on: its data range and its four control
 /// points. A segment of a later round with the same range and bit for bit the same control points
 /// has the same errors, so they are not measured again.
@@ -273,5 +314,67 @@ pub(crate) fn assess_reusing<const D: usize>(
         max_c2d,
         verdicts,
         driven,
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::{COARSE_STRIDE, subsample_exceeds};
+    use crate::{Closure, SubdivCurve, Vector2};
+
+    /// The subsample's verdict against an independent oracle: each sampled data point's distance
+    /// by the nearest of 20,001 points of the segment (within 10⁻⁸ here), the largest over every
+    /// [`COARSE_STRIDE`]-th point of the segment (its end point left out). Just below that
+    /// largest distance the subsample exceeds the tolerance, just above it not; the data points
+    /// between the samples (much farther off) do not count.
+    #[test]
+    fn subsample_exceeds_is_the_strided_maximum() {
+        let points: Vec<Vector2> = [(0.0, 0.0), (1.0, 0.9), (2.0, 1.2), (3.0, 0.4), (4.0, 0.0)]
+            .iter()
+            .map(|&(x, y)| Vector2::new(x, y))
+            .collect();
+        let curve = SubdivCurve::with_sharp(points, &[0, 4], Closure::Open).unwrap();
+        // 53 data points on segment 1 (data indices 0..=52, fitting points 0 and 52): off the
+        // curve along y by a varying amount, every other point far off (they are not sampled
+        // when the stride is even).
+        let per = 52;
+        let data: Vec<Vector2> = (0..=per)
+            .map(|m| {
+                let p = curve.eval_segment(1, m as f64 / per as f64).unwrap();
+                let off = if m % 2 == 1 {
+                    0.5
+                } else {
+                    1e-3 * (m % 7) as f64
+                };
+                p + Vector2::new(0.0, off)
+            })
+            .collect();
+        let fitting = [
+            (0, true),
+            (0, false),
+            (per, false),
+            (per, false),
+            (per, true),
+        ];
+        // Only segment 1 is used: its range is 0..=52.
+        let dense: Vec<Vector2> = (0..=20_000)
+            .map(|i| curve.eval_segment(1, f64::from(i) / 20_000.0).unwrap())
+            .collect();
+        let oracle = |v: &Vector2| {
+            dense
+                .iter()
+                .map(|p| (p - v).norm())
+                .fold(f64::MAX, f64::min)
+        };
+        assert_eq!(COARSE_STRIDE % 2, 0);
+        let worst = (0..per)
+            .step_by(COARSE_STRIDE)
+            .map(|m| oracle(&data[m]))
+            .fold(0.0, f64::max);
+        assert!(worst > 1e-3 && worst < 0.01, "{worst}");
+        assert!(subsample_exceeds(&data, &fitting, &curve, 1, worst - 1e-7));
+        assert!(!subsample_exceeds(&data, &fitting, &curve, 1, worst + 1e-7));
+        // The skipped points are far off: the full maximum would exceed 0.1.
+        assert!(oracle(&data[1]) > 0.1);
     }
 }

@@ -16,7 +16,7 @@
 use bez_core::Vector;
 
 use crate::SubdivCurve;
-use crate::assess::{Measured, assess_segment};
+use crate::assess::{Measured, assess_segment, subsample_exceeds};
 use crate::chord::ChordLengths;
 use crate::corner_angles::{CornerTangents, cone_rays, corner_turns_kept, span_sides_kept};
 use crate::fit::{FitMode, FitOptions, Reduction, solve_curve};
@@ -43,7 +43,10 @@ pub const MAX_REDUCED: usize = 4096;
 /// [`Reduction::Refit`] refits (the others are fixed).
 const REFIT_REACH: usize = 2;
 
-/// Passes over the fitting points.
+/// Passes over the fitting points. With [`Reduction::Refit`] a point is tried only while the errors
+/// of its two segments sum to at most the tolerance: merging two segments that together already
+/// use more than the tolerance rarely keeps it (on the glyph set at 10⁻³ em the count stays 1,794
+/// with 6 % fewer instructions in all; at 10⁻² em 1,178 instead of 1,173).
 const PASSES: usize = 2;
 
 /// Removes regular fitting points while every segment's error (`errors`, one per segment,
@@ -83,7 +86,11 @@ pub(crate) fn reduce<const D: usize>(
             })
             .collect();
         order.sort_by(|x, y| x.0.total_cmp(&y.0).then(x.1.cmp(&y.1)));
-        for (_, index) in order {
+        for (sum, index) in order {
+            // In increasing order: with `Reduction::Refit` the rest is not tried.
+            if options.reduction == Reduction::Refit && sum > options.tolerance {
+                break;
+            }
             if fitting.len() <= min_points {
                 return removed;
             }
@@ -237,6 +244,14 @@ fn try_removal<const D: usize>(
     }
     let mut window: Vec<usize> = (0..segs2).filter(|&s| measured(s)).collect();
     window.sort_by_key(|&s| distance(s));
+    // With `Reduction::Refit`, a subsample of the window's segments first (as in `fit_spans`).
+    if options.reduction == Reduction::Refit
+        && window
+            .iter()
+            .any(|&s| subsample_exceeds(data, &trial, &next, s, tol))
+    {
+        return None;
+    }
     for s in window {
         out[s] =
             assess_segment(data, &trial, &next, closed, options, s, tol).driven(options.measure);
@@ -420,10 +435,19 @@ pub(crate) fn fit_spans<const D: usize>(
                         return None;
                     }
                     let segs = next.segment_count();
-                    let span_segments = (0..segs).filter(|&s| {
-                        let start = trial[s].0;
-                        start == span.0 % n || inside(start)
-                    });
+                    let span_segments: Vec<usize> = (0..segs)
+                        .filter(|&s| {
+                            let start = trial[s].0;
+                            start == span.0 % n || inside(start)
+                        })
+                        .collect();
+                    // A subsample of every segment first: most failing trials fail there.
+                    if span_segments
+                        .iter()
+                        .any(|&s| subsample_exceeds(data, &trial, &next, s, tol))
+                    {
+                        return None;
+                    }
                     let mut errors = Vec::new();
                     for s in span_segments {
                         let e = assess_segment(data, &trial, &next, closed, options, s, tol);

@@ -6,7 +6,8 @@
 //! changes only the segments they shape: the normal equations of those segments' data in the free
 //! points are a band of half-width 3 ([`CyclicBand`]), solved in O(window) time, and every other
 //! segment stays bit for bit what it was. Each iteration takes the foot-point parameters of the
-//! data on the current curve (Newton on eq. (6) from the chord-length start) and solves for the
+//! data on the current curve (Newton on eq. (6), each sample starting from a step along the tangent
+//! from the previous sample's foot point) and solves for the
 //! free points (Gauss–Newton on the foot-point distances with the parameters fixed per step).
 
 use bez_core::Vector;
@@ -24,6 +25,11 @@ use crate::on_rays::{RayColumn, solve_on_rays};
 /// least-squares control points of a few dozen points of a segment are those of all of them to
 /// well within the tolerance, and the result is measured on all data anyway.
 pub(crate) const SAMPLES_PER_SEGMENT: usize = 16;
+
+/// Data points per segment of the iterations before the last, which only give it its foot points:
+/// the last iteration sets the result (on the glyph set at 10⁻³ em 1,794 control points instead of
+/// 1,795 with 16 in both, 7 % fewer instructions in all).
+pub(crate) const FIRST_SAMPLES: usize = 8;
 
 /// Iterations of foot points and solve per refit.
 pub(crate) const ITERATIONS: usize = 2;
@@ -78,7 +84,7 @@ pub(crate) fn refit<const D: usize>(
     }
     let segments = shaped_segments(&guess, free);
     let mut curve = guess;
-    for _ in 0..ITERATIONS {
+    for iteration in 0..ITERATIONS {
         let sharp = curve.kinds();
         let mut ata = CyclicBand::zeros(u);
         let mut atb = vec![[0.0; D]; u];
@@ -86,29 +92,51 @@ pub(crate) fn refit<const D: usize>(
             let (a, b) = segment_range(fitting, s, n);
             let ctrl = curve.segment_controls(s).ok()?;
             let cubic = PowerCubic::new(&ctrl);
-            let stride = (b - a).div_ceil(SAMPLES_PER_SEGMENT).max(1);
-            let offsets = (0..=b - a)
-                .step_by(stride)
-                .chain(((b - a) % stride != 0).then_some(b - a));
-            // The segment's Gram matrix G = Σ B(t) B(t)ᵀ of the B-spline basis and the moments
-            // Σ B(t) vᵀ, then mapped once onto the vertices its four control points are made of.
+            let last = b - a;
+            let samples = if iteration + 1 < ITERATIONS {
+                FIRST_SAMPLES
+            } else {
+                SAMPLES_PER_SEGMENT
+            };
+            let stride = last.div_ceil(samples).max(1);
+            // The segment's Gram matrix G = Σ B(t) B(t)ᵀ of the B-spline basis (its upper
+            // triangle) and the moments Σ B(t) vᵀ, then mapped once onto the vertices its four
+            // control points are made of.
             let mut gram = [[0.0; 4]; 4];
             let mut moment = [[0.0; D]; 4];
-            for off in offsets {
-                // Newton's start: the index fraction (the data are about evenly spaced along
-                // a segment, and the foot point does not depend on the start).
-                let v = data[(a + off) % n];
-                let (t, _) = cubic.foot(&v, off as f64 / (b - a) as f64);
+            // The samples at offsets 0, stride, 2 stride, …, and the last. Newton's start: 0 for
+            // the first (the segment's fitting point), then a step along the tangent from the
+            // previous sample's foot point (`PowerCubic::start_after`; the data follow the
+            // segment).
+            let (mut off, mut t, mut previous) = (0, 0.0, data[a]);
+            loop {
+                // a < n and b < 2n (`segment_range`).
+                let i = a + off;
+                let v = data[if i < n { i } else { i - n }];
+                let t0 = if off == 0 {
+                    0.0
+                } else {
+                    cubic.start_after(t, &previous, &v)
+                };
+                (t, _) = cubic.foot(&v, t0);
+                previous = v;
                 let w = bspline_basis(t);
                 let v = <[f64; D]>::from(v);
                 for r in 0..4 {
-                    for c in 0..4 {
+                    for c in r..4 {
                         gram[r][c] += w[r] * w[c];
                     }
                     for d in 0..D {
                         moment[r][d] += w[r] * v[d];
                     }
                 }
+                if off == last {
+                    break;
+                }
+                off = (off + stride).min(last);
+            }
+            for (r, c) in [(1, 0), (2, 0), (2, 1), (3, 0), (3, 1), (3, 2)] {
+                gram[r][c] = gram[c][r];
             }
             // Control point r = Σ coefficient · vertex (phantom points at sharp ends): its free
             // part by column, its fixed part as a point.

@@ -15,8 +15,10 @@ use crate::curve::Closure;
 use crate::distance::PowerCubic;
 use crate::error::BestCurve;
 use crate::insertion::{insert_points, segment_range};
+use crate::joints::{Joints, balance, make_room};
 use crate::reduction::{MAX_REDUCED, fit_spans, reduce, respace_spans};
 use crate::seeding::seed;
+use crate::tangent_rows::{joint_tangents, solve_with_tangents};
 use crate::tridiagonal::solve_tridiagonal;
 use crate::vertex::VertexKind;
 use crate::{SubdivCurve, SubdivFitError};
@@ -347,11 +349,15 @@ pub struct RoundReport {
 #[derive(Debug, Clone, PartialEq)]
 #[non_exhaustive]
 pub struct Fit<const D: usize> {
-    /// The fitted curve: one control point per fitting point.
+    /// The fitted curve: one control point per fitting point, two per tangent joint (the
+    /// tangent vertex and its partner, which share the joint's knot).
     pub curve: SubdivCurve<D>,
-    /// Data indices of the fitting points, increasing; segment j covers data
+    /// Data indices of the fitting points (the curve's knots), increasing; segment j covers data
     /// `fitting[j]..=fitting[j+1]` (wrapping for closed data).
     pub fitting: Vec<usize>,
+    /// Data indices of the tangent joints (fitting points whose knot is double, see
+    /// [`fit_with_joints`]), increasing; empty without them.
+    pub tangents: Vec<usize>,
     /// Data indices of the initial fitting points (round 0).
     pub initial: Vec<usize>,
     /// One report per round, round 0 first.
@@ -630,20 +636,73 @@ pub fn fit_with_corners<const D: usize>(
     corners: &[usize],
     options: &FitOptions,
 ) -> Result<Fit<D>, SubdivFitError> {
-    match fit_checked(data, closure, corners, options) {
+    fit_with_joints(data, closure, &Joints::new().with_corners(corners), options)
+}
+
+/// [`fit_with_corners`] with tangent joints as well: the data points at [`Joints::tangents`] become
+/// fitting points whose control points are a [`VertexKind::Tangent`] vertex and its partner (a
+/// double knot), so the curve is tangent-continuous there while its curvature may jump, as where a
+/// straight side meets an arc tangentially (a regular vertex would be C2 and a sharp one a corner
+/// with zero curvature on both sides). The joints bound the spans of [`Seeding::Scaled`] as
+/// corners do, and each gets two regular fitting points on each side before any corner or end of
+/// the data (where there are fewer, the points between are placed again at equal chord-length
+/// steps, one more).
+///
+/// The pair's rows of eq. (4) interpolate the joint's data point and set the curve's first
+/// derivative there to the data's tangent (one-sided quadratic estimates, as for
+/// [`FitOptions::corner_tolerance`]) times the shorter of the two segments next to it; these fix
+/// the pair by themselves, so the two sides solve independently, as across a sharp vertex, and the
+/// system is a band of half-width 2, solved in O(k). The segments next to a joint are kept within
+/// a factor 2 of each other's length (the curve leaves the joint on both sides with one speed).
+/// With tangent joints the fit interpolates in every [`FitMode`], applies no
+/// [`FitOptions::corner_tolerance`] and no [`Reduction`] (the least-squares rows, the corner bound
+/// and the point removal do not know double knots yet): the curve of the last round is returned.
+///
+/// ```
+/// use subdiv_fit::{Closure, FitOptions, Joints, Vector2, VertexKind, fit_with_joints};
+///
+/// // A straight line into a quarter circle of radius 1, tangent at data point 40.
+/// let mut data: Vec<Vector2> = (0..40).map(|k| Vector2::new(-2.0 + k as f64 / 20.0, 0.0)).collect();
+/// data.extend((0..=40).map(|k| {
+///     let t = std::f64::consts::FRAC_PI_2 * k as f64 / 40.0;
+///     Vector2::new(t.sin(), 1.0 - t.cos())
+/// }));
+/// let joints = Joints::new().with_tangents(&[40]);
+/// let f = fit_with_joints(&data, Closure::Open, &joints, &FitOptions::new(1e-3))?;
+/// assert_eq!(f.tangents, [40]);
+/// assert_eq!(f.curve.kinds().iter().filter(|&&k| k == VertexKind::Tangent).count(), 1);
+/// assert_eq!(f.curve.points().len(), f.fitting.len() + 1);
+/// # Ok::<(), subdiv_fit::SubdivFitError>(())
+/// ```
+///
+/// # Errors
+/// As [`fit_with_corners`], and [`SubdivFitError::InvalidTangentJoint`] for a tangent joint
+/// outside the data, at an end of open data, at a given corner, or without data for two fitting
+/// points between it and a corner or an end.
+pub fn fit_with_joints<const D: usize>(
+    data: &[Vector<D>],
+    closure: Closure,
+    joints: &Joints,
+    options: &FitOptions,
+) -> Result<Fit<D>, SubdivFitError> {
+    let result = match fit_checked(data, closure, joints, options) {
         // The corners' bound moves control points: without it the distance alone may be met.
         Err(SubdivFitError::NoConvergence { .. }) if options.corner_tolerance.is_some() => {
-            fit_checked(data, closure, corners, &options.with_corner_tolerance(None))
+            fit_checked(data, closure, joints, &options.with_corner_tolerance(None))
         }
         result => result,
-    }
+    };
+    result.map(|f| Fit {
+        tangents: joints.tangents().to_vec(),
+        ..f
+    })
 }
 
 /// [`fit_with_corners`] without the retry.
 fn fit_checked<const D: usize>(
     data: &[Vector<D>],
     closure: Closure,
-    corners: &[usize],
+    joints: &Joints,
     options: &FitOptions,
 ) -> Result<Fit<D>, SubdivFitError> {
     let closed = closure.is_closed();
@@ -651,12 +710,20 @@ fn fit_checked<const D: usize>(
     validate_options(options)?;
     check_precision(data, options.tolerance)?;
     let n = data.len();
-    if let Some(&index) = corners.iter().find(|&&c| c >= n) {
-        return Err(SubdivFitError::CornerOutOfRange { index, points: n });
-    }
-    let mut given = corners.to_vec();
-    given.sort_unstable();
-    given.dedup();
+    joints.check(n, closed)?;
+    let tangents = joints.tangents();
+    // With tangent joints: interpolation, no corner bound, no reduction (see `fit_with_joints`).
+    let options = &if tangents.is_empty() {
+        *options
+    } else {
+        FitOptions {
+            mode: FitMode::Interpolate,
+            corner_tolerance: None,
+            reduction: Reduction::Off,
+            ..*options
+        }
+    };
+    let given = joints.corners();
     let chords = ChordLengths::robust(data, closed, anchor_spacing(options));
     let mut fitting: Vec<(usize, bool)> = match options.seeding {
         Seeding::CurvatureMaxima => {
@@ -670,7 +737,7 @@ fn fit_checked<const D: usize>(
             .iter()
             .map(|f| (f.index, f.sharp))
             .collect();
-            for &c in &given {
+            for &c in given {
                 match f.binary_search_by_key(&c, |x| x.0) {
                     Ok(pos) => f[pos].1 = true,
                     Err(pos) => f.insert(pos, (c, true)),
@@ -679,7 +746,12 @@ fn fit_checked<const D: usize>(
             f
         }
         Seeding::Scaled => {
-            let found = scaled_corners_of(data, &chords, closed, &given, options);
+            // Detection runs away from the tangent joints too, which are no corners.
+            let mut known: Vec<usize> = given.iter().chain(tangents).copied().collect();
+            known.sort_unstable();
+            let found = scaled_corners_of(data, &chords, closed, &known, options);
+            // The tangent joints bound the spans too (each side seeded on its own); `make_room`
+            // makes them regular.
             seed(
                 data,
                 &chords,
@@ -695,6 +767,9 @@ fn fit_checked<const D: usize>(
             split_largest_gap(&mut fitting, n);
         }
     }
+    make_room(&mut fitting, tangents, &chords, closed)?;
+    balance(&mut fitting, tangents, &chords, closed);
+    let directions = joint_tangents(data, &fitting, tangents, closed, sigma(options));
     let initial: Vec<usize> = fitting.iter().map(|f| f.0).collect();
     if options.reduction == Reduction::Refit
         && let Some(direct) = span_fit(data, &chords, &fitting, closed, options)
@@ -709,11 +784,15 @@ fn fit_checked<const D: usize>(
     let mut round = 0;
     let mut measured = Vec::new();
     loop {
-        let curve = solve_curve(data, &fitting, closed, options)?;
+        let curve = if tangents.is_empty() {
+            solve_curve(data, &fitting, closed, options)?
+        } else {
+            solve_with_tangents(data, &fitting, tangents, &directions, closed)?
+        };
         let assessment = assess_reusing(data, &fitting, &curve, closed, options, &mut measured);
         reports.push(RoundReport {
             round,
-            control_points: fitting.len(),
+            control_points: curve.points().len(),
             max_data_to_curve: assessment.max_d2c,
             rms_data_to_curve: assessment.rms_d2c,
             max_curve_to_data: assessment.max_c2d,
@@ -758,7 +837,8 @@ fn fit_checked<const D: usize>(
                 options.insertion,
                 &chords,
                 closed,
-            ) == 0
+            ) + balance(&mut fitting, tangents, &chords, closed)
+                == 0
         {
             return Err(SubdivFitError::NoConvergence {
                 rounds: round,
@@ -815,6 +895,7 @@ fn span_fit<const D: usize>(
     Some(Fit {
         curve,
         fitting: fitting.iter().map(|f| f.0).collect(),
+        tangents: Vec::new(),
         initial: Vec::new(),
         reports,
         reduced,
@@ -855,6 +936,7 @@ fn finish<const D: usize>(
     Fit {
         curve,
         fitting: fitting.iter().map(|f| f.0).collect(),
+        tangents: Vec::new(),
         initial,
         reports,
         reduced,

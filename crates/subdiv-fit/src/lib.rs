@@ -63,6 +63,7 @@
 //! ```
 
 mod assess;
+mod band_lu;
 mod banded;
 mod bspline;
 #[cfg(feature = "paper")]
@@ -78,6 +79,7 @@ pub mod eigen;
 mod error;
 mod fit;
 mod insertion;
+mod joints;
 mod knots;
 #[cfg(feature = "kurbo")]
 mod path;
@@ -87,6 +89,7 @@ mod seeding;
 mod segment;
 mod svg;
 mod tangent;
+mod tangent_rows;
 mod tridiagonal;
 mod vertex;
 
@@ -100,8 +103,9 @@ pub use crate::error::{BestCurve, SubdivFitError};
 pub use crate::fit::{
     ErrorMeasure, Fit, FitMode, FitOptions, Insertion, MAX_DATA_COORDINATE, MAX_FEATURE_SCALE,
     MAX_FIT_POINTS, MAX_ROUNDS, MAX_SAMPLES_PER_SEGMENT, Reduction, RoundReport, Seeding, fit,
-    fit_with_corners, scaled_corners,
+    fit_with_corners, fit_with_joints, scaled_corners,
 };
+pub use crate::joints::Joints;
 #[cfg(feature = "kurbo")]
 pub use crate::path::{
     PATH_CORNER_ANGLE, SampledContour, fit_bez_path, sample_bez_path, sample_svg_path,

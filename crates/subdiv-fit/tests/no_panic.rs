@@ -13,11 +13,12 @@ use bez_core::{BezierForm, MAX_COORDINATE};
 use proptest::prelude::*;
 use subdiv_fit::{
     BestCurve, CORNER_TOLERANCE, Closure, CurvePoint, ErrorMeasure, FeaturePoint, Fit, FitMode,
-    FitOptions, Insertion, MAX_DATA_COORDINATE, MAX_FEATURE_SCALE, MAX_FIT_POINTS, MAX_REDUCED,
-    MAX_ROUNDS, MAX_SAMPLES_PER_SEGMENT, Reduction, RoundReport, SCALE_RATIO, Seeding, Segment,
-    SubdivCurve, SubdivFitError, Vector2, Vector3, VertexKind, bspline_basis, bspline_basis_d1,
-    bspline_basis_d2, bspline_to_bezier, discrete_curvature, feature_points, fit, fit_with_corners,
-    foot_point, point_polyline_distance, scaled_corners, svg_path, turning_angle,
+    FitOptions, Insertion, Joints, MAX_DATA_COORDINATE, MAX_FEATURE_SCALE, MAX_FIT_POINTS,
+    MAX_REDUCED, MAX_ROUNDS, MAX_SAMPLES_PER_SEGMENT, Reduction, RoundReport, SCALE_RATIO, Seeding,
+    Segment, SubdivCurve, SubdivFitError, Vector2, Vector3, VertexKind, bspline_basis,
+    bspline_basis_d1, bspline_basis_d2, bspline_to_bezier, discrete_curvature, feature_points, fit,
+    fit_with_corners, fit_with_joints, foot_point, point_polyline_distance, scaled_corners,
+    svg_path, turning_angle,
 };
 
 fn wild() -> impl Strategy<Value = f64> {
@@ -169,7 +170,12 @@ fn check_fit(result: &Result<Fit<2>, SubdivFitError>, n: usize) -> Result<(), Te
             prop_assert!(curve_ok(&f.curve));
             prop_assert!(f.reports.iter().all(report_ok));
             prop_assert!(f.fitting.iter().all(|&i| i < n));
-            prop_assert_eq!(f.fitting.len(), f.curve.points().len());
+            prop_assert_eq!(f.fitting.len() + f.tangents.len(), f.curve.points().len());
+            prop_assert!(
+                f.tangents
+                    .iter()
+                    .all(|t| f.fitting.binary_search(t).is_ok())
+            );
             prop_assert!(f.initial.iter().all(|&i| i < n));
             prop_assert!(f.last().is_some() && f.rounds() + 1 == f.reports.len());
             prop_assert!(f.reduced.iter().all(report_ok));
@@ -314,6 +320,10 @@ proptest! {
         let start = Instant::now();
         check_fit(&fit(&data, closure, &opts), n)?;
         check_fit(&fit_with_corners(&data, closure, &corners, &opts), n)?;
+        let joints = Joints::new().with_corners(&corners[..corners.len() / 2]).with_tangents(&corners[corners.len() / 2..]);
+        prop_assert!(joints.corners().windows(2).all(|w| w[0] < w[1]));
+        prop_assert!(joints.tangents().windows(2).all(|w| w[0] < w[1]));
+        check_fit(&fit_with_joints(&data, closure, &joints, &opts), n)?;
         if let Ok(found) = scaled_corners(&data, closure, &opts) {
             prop_assert!(found.windows(2).all(|w| w[0] < w[1]) && found.iter().all(|&i| i < n));
         }

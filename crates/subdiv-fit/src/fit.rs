@@ -18,6 +18,7 @@ use crate::insertion::{insert_points, segment_range};
 use crate::joints::{Joints, balance, make_room};
 use crate::reduction::{MAX_REDUCED, fit_spans, reduce, respace_spans};
 use crate::seeding::seed;
+use crate::tangent_joints::detect_tangent_joints;
 use crate::tangent_rows::{joint_tangents, solve_with_tangents};
 use crate::tridiagonal::solve_tridiagonal;
 use crate::vertex::VertexKind;
@@ -199,7 +200,21 @@ pub struct FitOptions {
     /// 2,667 with interpolation, 1.66 ms per glyph instead of 0.88.
     #[cfg_attr(feature = "serde", serde(default))]
     pub corner_tolerance: Option<f64>,
+    /// Detection of tangent joints (opt-in, with [`Seeding::Scaled`]): a data point becomes a
+    /// tangent joint, as if given to [`fit_with_joints`], where the one-sided quadratic estimates
+    /// of the data (reach 16 feature scales) agree in direction within 5° but their curvatures
+    /// differ by at least this fraction of the larger one, `|κ⁺ − κ⁻| / max(|κ⁺|, |κ⁻|)` (1
+    /// where a line meets an arc, `1 − ρ₁/ρ₂` where arcs of radii ρ₁ < ρ₂ meet), by a jump above
+    /// the estimates' noise (`|κ⁺ − κ⁻| · reach ≥ 0.005`), by as much at half the reach (a smooth
+    /// curve's estimates differ half as much there), and no point within the reach differs more.
+    /// [`TANGENT_JUMP`] (0.5) suits outlines of lines and arcs. Default `None` (no detection);
+    /// a value must lie in (0, 1].
+    #[cfg_attr(feature = "serde", serde(default))]
+    pub tangent_jump: Option<f64>,
 }
+
+/// A threshold for [`FitOptions::tangent_jump`]: curvatures that differ by half the larger one.
+pub const TANGENT_JUMP: f64 = 0.5;
 
 impl FitOptions {
     /// The defaults with the given tolerance.
@@ -219,6 +234,7 @@ impl FitOptions {
             insertion: Insertion::Bisect,
             reduction: Reduction::RemovePoints,
             corner_tolerance: None,
+            tangent_jump: None,
         }
     }
 
@@ -317,6 +333,14 @@ impl FitOptions {
     #[must_use]
     pub fn with_corner_tolerance(mut self, value: Option<f64>) -> Self {
         self.corner_tolerance = value;
+        self
+    }
+
+    /// With `tangent_jump` set to `value` (the threshold of tangent-joint detection, or `None`
+    /// for none).
+    #[must_use]
+    pub fn with_tangent_jump(mut self, value: Option<f64>) -> Self {
+        self.tangent_jump = value;
         self
     }
 
@@ -470,6 +494,15 @@ fn validate_options(o: &FitOptions) -> Result<(), SubdivFitError> {
             name: "corner_tolerance",
             value,
             reason: "must lie in (0, π]",
+        });
+    }
+    if let Some(value) = o.tangent_jump
+        && !(value > 0.0 && value <= 1.0)
+    {
+        return Err(SubdivFitError::InvalidOption {
+            name: "tangent_jump",
+            value,
+            reason: "must lie in (0, 1]",
         });
     }
     for (name, value, ok, reason) in checks {
@@ -685,17 +718,13 @@ pub fn fit_with_joints<const D: usize>(
     joints: &Joints,
     options: &FitOptions,
 ) -> Result<Fit<D>, SubdivFitError> {
-    let result = match fit_checked(data, closure, joints, options) {
+    match fit_checked(data, closure, joints, options) {
         // The corners' bound moves control points: without it the distance alone may be met.
         Err(SubdivFitError::NoConvergence { .. }) if options.corner_tolerance.is_some() => {
             fit_checked(data, closure, joints, &options.with_corner_tolerance(None))
         }
         result => result,
-    };
-    result.map(|f| Fit {
-        tangents: joints.tangents().to_vec(),
-        ..f
-    })
+    }
 }
 
 /// [`fit_with_corners`] without the retry.
@@ -711,20 +740,9 @@ fn fit_checked<const D: usize>(
     check_precision(data, options.tolerance)?;
     let n = data.len();
     joints.check(n, closed)?;
-    let tangents = joints.tangents();
-    // With tangent joints: interpolation, no corner bound, no reduction (see `fit_with_joints`).
-    let options = &if tangents.is_empty() {
-        *options
-    } else {
-        FitOptions {
-            mode: FitMode::Interpolate,
-            corner_tolerance: None,
-            reduction: Reduction::Off,
-            ..*options
-        }
-    };
     let given = joints.corners();
     let chords = ChordLengths::robust(data, closed, anchor_spacing(options));
+    let mut tangents = joints.tangents().to_vec();
     let mut fitting: Vec<(usize, bool)> = match options.seeding {
         Seeding::CurvatureMaxima => {
             let mut f: Vec<(usize, bool)> = feature_points(
@@ -747,9 +765,20 @@ fn fit_checked<const D: usize>(
         }
         Seeding::Scaled => {
             // Detection runs away from the tangent joints too, which are no corners.
-            let mut known: Vec<usize> = given.iter().chain(tangents).copied().collect();
+            let mut known: Vec<usize> = given.iter().chain(&tangents).copied().collect();
             known.sort_unstable();
-            let found = scaled_corners_of(data, &chords, closed, &known, options);
+            let mut found = scaled_corners_of(data, &chords, closed, &known, options);
+            if let Some(threshold) = options.tangent_jump {
+                // Away from the corners and from the given tangent joints.
+                tangents.extend(detect_tangent_joints(
+                    data, closed, &found, threshold, options,
+                ));
+                tangents.sort_unstable();
+                tangents.dedup();
+                found.extend(&tangents);
+                found.sort_unstable();
+                found.dedup();
+            }
             // The tangent joints bound the spans too (each side seeded on its own); `make_room`
             // makes them regular.
             seed(
@@ -760,6 +789,18 @@ fn fit_checked<const D: usize>(
                 sigma(options),
                 options.tolerance,
             )
+        }
+    };
+    let tangents = &tangents[..];
+    // With tangent joints: interpolation, no corner bound, no reduction (see `fit_with_joints`).
+    let options = &if tangents.is_empty() {
+        *options
+    } else {
+        FitOptions {
+            mode: FitMode::Interpolate,
+            corner_tolerance: None,
+            reduction: Reduction::Off,
+            ..*options
         }
     };
     if closed {
@@ -817,15 +858,17 @@ fn fit_checked<const D: usize>(
                 round += 1;
                 continue;
             }
-            return Ok(finish(
-                data, &chords, state, initial, reports, closed, options,
-            ));
+            return Ok(Fit {
+                tangents: tangents.to_vec(),
+                ..finish(data, &chords, state, initial, reports, closed, options)
+            });
         }
         if let Some(state) = within.take() {
             reports.truncate(state.round + 1);
-            return Ok(finish(
-                data, &chords, state, initial, reports, closed, options,
-            ));
+            return Ok(Fit {
+                tangents: tangents.to_vec(),
+                ..finish(data, &chords, state, initial, reports, closed, options)
+            });
         }
         if best.as_ref().is_none_or(|b| worst < b.1) {
             best = Some((curve.clone(), worst));

@@ -22,7 +22,6 @@ use crate::chord::ChordLengths;
 /// assert_eq!(joints.tangents(), [30, 90]);
 /// ```
 #[derive(Debug, Clone, Default, PartialEq, Eq)]
-#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 #[non_exhaustive]
 pub struct Joints {
     corners: Vec<usize>,

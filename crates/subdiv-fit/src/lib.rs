@@ -89,6 +89,7 @@ mod seeding;
 mod segment;
 mod svg;
 mod tangent;
+mod tangent_joints;
 mod tangent_rows;
 mod tridiagonal;
 mod vertex;
@@ -102,8 +103,8 @@ pub use crate::distance::{foot_point, point_polyline_distance};
 pub use crate::error::{BestCurve, SubdivFitError};
 pub use crate::fit::{
     ErrorMeasure, Fit, FitMode, FitOptions, Insertion, MAX_DATA_COORDINATE, MAX_FEATURE_SCALE,
-    MAX_FIT_POINTS, MAX_ROUNDS, MAX_SAMPLES_PER_SEGMENT, Reduction, RoundReport, Seeding, fit,
-    fit_with_corners, fit_with_joints, scaled_corners,
+    MAX_FIT_POINTS, MAX_ROUNDS, MAX_SAMPLES_PER_SEGMENT, Reduction, RoundReport, Seeding,
+    TANGENT_JUMP, fit, fit_with_corners, fit_with_joints, scaled_corners,
 };
 pub use crate::joints::Joints;
 #[cfg(feature = "kurbo")]

@@ -15,10 +15,10 @@ use subdiv_fit::{
     BestCurve, CORNER_TOLERANCE, Closure, CurvePoint, ErrorMeasure, FeaturePoint, Fit, FitMode,
     FitOptions, Insertion, Joints, MAX_DATA_COORDINATE, MAX_FEATURE_SCALE, MAX_FIT_POINTS,
     MAX_REDUCED, MAX_ROUNDS, MAX_SAMPLES_PER_SEGMENT, Reduction, RoundReport, SCALE_RATIO, Seeding,
-    Segment, SubdivCurve, SubdivFitError, Vector2, Vector3, VertexKind, bspline_basis,
-    bspline_basis_d1, bspline_basis_d2, bspline_to_bezier, discrete_curvature, feature_points, fit,
-    fit_with_corners, fit_with_joints, foot_point, point_polyline_distance, scaled_corners,
-    svg_path, turning_angle,
+    Segment, SubdivCurve, SubdivFitError, TANGENT_JUMP, Vector2, Vector3, VertexKind,
+    bspline_basis, bspline_basis_d1, bspline_basis_d2, bspline_to_bezier, discrete_curvature,
+    feature_points, fit, fit_with_corners, fit_with_joints, foot_point, point_polyline_distance,
+    scaled_corners, svg_path, turning_angle,
 };
 
 fn wild() -> impl Strategy<Value = f64> {
@@ -96,14 +96,17 @@ fn options() -> impl Strategy<Value = FitOptions> {
             Just(1_000_000_000)
         ],
         any::<(bool, bool, bool, bool, bool)>(),
-        prop_oneof![
-            Just(None),
-            Just(Some(CORNER_TOLERANCE)),
-            wild().prop_map(Some)
-        ],
+        (
+            prop_oneof![
+                Just(None),
+                Just(Some(CORNER_TOLERANCE)),
+                wild().prop_map(Some)
+            ],
+            prop_oneof![Just(None), Just(Some(TANGENT_JUMP)), wild().prop_map(Some)],
+        ),
     )
         .prop_map(
-            |((tol, angle), scale, (floor, prominence), rounds, samples, flags, corner)| {
+            |((tol, angle), scale, (floor, prominence), rounds, samples, flags, (corner, jump))| {
                 let tol = if tol.is_finite() {
                     tol.abs().max(1e-12)
                 } else {
@@ -143,6 +146,7 @@ fn options() -> impl Strategy<Value = FitOptions> {
                         (false, _) => Reduction::Off,
                     })
                     .with_corner_tolerance(corner)
+                    .with_tangent_jump(jump)
             },
         )
 }

@@ -9,8 +9,8 @@
 use std::f64::consts::PI;
 
 use subdiv_fit::{
-    Closure, Fit, FitOptions, Joints, SubdivCurve, SubdivFitError, Vector2, VertexKind, fit,
-    fit_with_joints, point_polyline_distance,
+    Closure, Fit, FitOptions, Joints, SubdivCurve, SubdivFitError, TANGENT_JUMP, Vector2,
+    VertexKind, fit, fit_with_joints, point_polyline_distance,
 };
 
 /// A piece of an exact outline: a line segment or a circular arc (centre, radius, start angle,
@@ -320,4 +320,62 @@ fn tangent_joints_without_room_are_refused() {
         .with_tangents(&[starts[1]]);
     let f = fit_with_joints(&data, Closure::Open, &ok, &options).unwrap();
     assert_eq!(f.tangents, [starts[1]]);
+}
+
+/// Detection (`FitOptions::tangent_jump`) finds the joints of lines meeting arcs where they are,
+/// and none on a circle or an ellipse (smooth, the curvature varying by a factor 8).
+#[test]
+fn tangent_joints_are_detected_where_the_curvature_jumps() {
+    let tol = 1e-3;
+    let detecting = FitOptions::new(tol).with_tangent_jump(Some(TANGENT_JUMP));
+    for (pieces, closed, tol) in [
+        (rounded_corner(PI / 2.0), false, 1e-4),
+        (stadium(), true, 1e-3),
+    ] {
+        let detecting = detecting.with_tolerance(tol);
+        let (data, starts) = sample(&pieces, 0.002, closed);
+        let closure = Closure::from_closed(closed);
+        let f = fit(&data, closure, &detecting).unwrap();
+        let expected = if closed { &starts[..] } else { &starts[1..] };
+        assert_eq!(f.tangents, expected);
+        check_tangent_fit(&f, &data, &pieces, tol);
+        let given = fit_with_joints(
+            &data,
+            closure,
+            &Joints::new().with_tangents(expected),
+            &FitOptions::new(tol),
+        )
+        .unwrap();
+        assert_eq!(f.curve, given.curve);
+    }
+    let ellipse: Vec<Vector2> = (0..3000)
+        .map(|k| {
+            let t = 2.0 * PI * k as f64 / 3000.0;
+            Vector2::new(2.0 * t.cos(), t.sin())
+        })
+        .collect();
+    let circle: Vec<Vector2> = ellipse
+        .iter()
+        .map(|p| Vector2::new(p[0] / 2.0, p[1]))
+        .collect();
+    for data in [ellipse, circle] {
+        let f = fit(&data, Closure::Closed, &detecting).unwrap();
+        assert!(f.tangents.is_empty(), "{:?}", f.tangents);
+    }
+    // Thresholds out of range are refused before any work.
+    for bad in [0.0, -1.0, 1.5, f64::NAN, f64::INFINITY] {
+        let options = FitOptions::new(tol).with_tangent_jump(Some(bad));
+        assert!(matches!(
+            fit(&[Vector2::new(0.0, 0.0); 2], Closure::Open, &options),
+            Err(SubdivFitError::TooFewPoints { .. })
+        ));
+        let (data, _) = sample(&stadium(), 0.01, true);
+        assert!(matches!(
+            fit(&data, Closure::Closed, &options),
+            Err(SubdivFitError::InvalidOption {
+                name: "tangent_jump",
+                ..
+            })
+        ));
+    }
 }

@@ -771,7 +771,7 @@ fn fit_checked<const D: usize>(
             if let Some(threshold) = options.tangent_jump {
                 // Away from the corners and from the given tangent joints.
                 tangents.extend(detect_tangent_joints(
-                    data, closed, &found, threshold, options,
+                    data, &chords, closed, &found, threshold, options,
                 ));
                 tangents.sort_unstable();
                 tangents.dedup();

@@ -2,8 +2,8 @@
 //! stays tangent-continuous but its curvature jumps, as where a straight side meets an arc.
 //!
 //! At every data point a least-squares quadratic `b x + a x²` through the point is fitted to the
-//! samples within the reach `r` (16 feature scales) on each side (`x` the polyline length over `r`,
-//! thinned to about [`SAMPLES`] samples); its curvature vector at the point, `K = (2a)⊥ / |b|²`
+//! samples within the reach `r` (16 feature scales) on each side (`x` the polyline length over `r`;
+//! the samples averaged in at most [`SAMPLES`] runs of consecutive ones); its curvature vector at the point, `K = (2a)⊥ / |b|²`
 //! (the part of `2a` across the tangent `b`), is the same whichever way the side runs. A joint is
 //! a point where
 //!
@@ -20,6 +20,7 @@
 
 use bez_core::Vector;
 
+use crate::chord::ChordLengths;
 use crate::corner_angles::{REACH_SCALES, SAMPLES};
 use crate::fit::FitOptions;
 
@@ -36,51 +37,81 @@ pub(crate) const NOISE_FLOOR: f64 = 0.005;
 /// within the reach is a corner or a bend, not a joint).
 pub(crate) const MAX_TURN: f64 = 5.0 * std::f64::consts::PI / 180.0;
 
+/// Prefix sums of the data's arc lengths and positions over the data unrolled once more round
+/// (closed data), for the means of runs of samples in O(1).
+struct Sums<const D: usize> {
+    /// Arc length from point 0 of unrolled point j.
+    arc: Vec<f64>,
+    /// Σ of `arc` and of the positions over the first j unrolled points.
+    arc_sum: Vec<f64>,
+    point_sum: Vec<Vector<D>>,
+    n: usize,
+    closed: bool,
+}
+
+impl<const D: usize> Sums<D> {
+    fn new(data: &[Vector<D>], arc: &[f64], total: f64, closed: bool) -> Self {
+        let n = data.len();
+        let m = if closed { 2 * n } else { n };
+        let unrolled: Vec<f64> = (0..m)
+            .map(|j| if j < n { arc[j] } else { arc[j - n] + total })
+            .collect();
+        let (mut arc_sum, mut point_sum) = (vec![0.0], vec![Vector::<D>::zeros()]);
+        for j in 0..m {
+            arc_sum.push(arc_sum[j] + unrolled[j]);
+            point_sum.push(point_sum[j] + data[j % n]);
+        }
+        Self {
+            arc: unrolled,
+            arc_sum,
+            point_sum,
+            n,
+            closed,
+        }
+    }
+}
+
 /// The one-sided estimate at data point `i`: unit tangent (along the data's direction) and
-/// curvature vector, from the samples within `reach` forwards or backwards. `None` when the side
-/// is shorter than the reach (the end of open data) or degenerate.
+/// curvature vector, from the samples within `reach` forwards or backwards, averaged in at most
+/// [`SAMPLES`] runs of consecutive samples (dense noisy data are smoothed, not thinned). `None`
+/// when the side is shorter than the reach (the end of open data) or degenerate.
 fn side<const D: usize>(
     data: &[Vector<D>],
-    closed: bool,
+    sums: &Sums<D>,
     i: usize,
     forwards: bool,
     reach: f64,
-    stride: usize,
 ) -> Option<(Vector<D>, Vector<D>)> {
-    let n = data.len();
-    let origin = data[i];
-    let (mut t, mut prev) = (0.0, origin);
-    let (mut s2, mut s3, mut s4) = (0.0, 0.0, 0.0);
-    let (mut r1, mut r2) = (Vector::<D>::zeros(), Vector::<D>::zeros());
-    let mut k = 0;
-    loop {
-        k += 1;
-        if k >= n {
+    let (n, arc) = (sums.n, &sums.arc);
+    let base = if forwards || !sums.closed { i } else { i + n };
+    let (lo, hi) = if forwards {
+        let end = arc.partition_point(|&a| a - arc[base] <= reach);
+        if end >= arc.len() || end > base + n - 1 {
             return None;
         }
-        let j = if forwards {
-            if !closed && i + k >= n {
-                return None;
-            }
-            (i + k) % n
-        } else {
-            if !closed && k > i {
-                return None;
-            }
-            (i + n - k) % n
-        };
-        t += (data[j] - prev).norm();
-        prev = data[j];
-        if t > reach {
-            break;
+        (base + 1, end)
+    } else {
+        let start = arc.partition_point(|&a| arc[base] - a > reach);
+        if start == 0 || start + n <= base + 1 {
+            return None;
         }
-        if k % stride == 0 {
-            let (x, v) = (t / reach, data[j] - origin);
-            let x2 = x * x;
-            (s2, s3, s4) = (s2 + x2, s3 + x2 * x, s4 + x2 * x2);
-            r1 += v * x;
-            r2 += v * x2;
-        }
+        (start, base)
+    };
+    let count = hi.checked_sub(lo).filter(|&c| c >= 2)?;
+    let groups = count.min(SAMPLES);
+    let (s_origin, origin) = (arc[base], data[i]);
+    let (mut s2, mut s3, mut s4) = (0.0, 0.0, 0.0);
+    let (mut r1, mut r2) = (Vector::<D>::zeros(), Vector::<D>::zeros());
+    for g in 0..groups {
+        let (j0, j1) = (lo + g * count / groups, lo + (g + 1) * count / groups);
+        let c = (j1 - j0) as f64;
+        let t = ((sums.arc_sum[j1] - sums.arc_sum[j0]) / c - s_origin).abs();
+        let v = (sums.point_sum[j1] - sums.point_sum[j0]) / c - origin;
+        let x = t / reach;
+        let x2 = x * x;
+        (s2, s3, s4) = (s2 + x2, s3 + x2 * x, s4 + x2 * x2);
+        r1 += v * x;
+        r2 += v * x2;
     }
     let det = s2 * s4 - s3 * s3;
     if det.is_nan() || det <= 1e-12 * s2 * s4 {
@@ -105,6 +136,7 @@ fn side<const D: usize>(
 /// increasing).
 pub(crate) fn detect_tangent_joints<const D: usize>(
     data: &[Vector<D>],
+    chords: &ChordLengths,
     closed: bool,
     corners: &[usize],
     threshold: f64,
@@ -115,21 +147,12 @@ pub(crate) fn detect_tangent_joints<const D: usize>(
     if n < 5 || reach.is_nan() || reach <= 0.0 {
         return Vec::new();
     }
-    // Arc length from point 0, and the stride that thins a side to about SAMPLES samples.
-    let mut arc = Vec::with_capacity(n);
-    let mut s = 0.0;
-    arc.push(0.0);
-    for w in data.windows(2) {
-        s += (w[1] - w[0]).norm();
-        arc.push(s);
-    }
-    let total = if closed {
-        s + (data[0] - data[n - 1]).norm()
-    } else {
-        s
-    };
-    let spacing = total / n as f64;
-    let stride = (reach / (SAMPLES as f64 * spacing)).floor().max(1.0) as usize;
+    // Arc length from point 0.
+    // The noise-robust chord length (anchors σ / 4 apart): on dense noisy data the polyline's
+    // own length grows with the noise's zigzag.
+    let arc: Vec<f64> = (0..n).map(|i| chords.at(i)).collect();
+    let total = chords.total();
+    let sums = Sums::new(data, &arc, total, closed);
     // Arc-length distance between two data points (round the loop when closed).
     let apart = |i: usize, j: usize| {
         let d = (arc[i] - arc[j]).abs();
@@ -141,14 +164,14 @@ pub(crate) fn detect_tangent_joints<const D: usize>(
                 return 0.0;
             }
             // The one-sided curvature vectors at reach r (`None` unless the tangents agree).
-            let curvatures = |r: f64, stride: usize| match (
-                side(data, closed, i, false, r, stride),
-                side(data, closed, i, true, r, stride),
+            let curvatures = |r: f64| match (
+                side(data, &sums, i, false, r),
+                side(data, &sums, i, true, r),
             ) {
                 (Some((t0, k0)), Some((t1, k1))) if t0.dot(&t1) >= MAX_TURN.cos() => Some((k0, k1)),
                 _ => None,
             };
-            let Some((k0, k1)) = curvatures(reach, stride) else {
+            let Some((k0, k1)) = curvatures(reach) else {
                 return 0.0;
             };
             let full = (k1 - k0).norm();
@@ -157,7 +180,7 @@ pub(crate) fn detect_tangent_joints<const D: usize>(
                 return 0.0;
             }
             // A jump is the same at half the reach, a smooth change of curvature half as large.
-            match curvatures(0.5 * reach, stride.div_ceil(2)) {
+            match curvatures(0.5 * reach) {
                 Some((h0, h1)) if (h1 - h0).norm() >= SCALE_RATIO * full => full,
                 _ => 0.0,
             }

@@ -323,7 +323,8 @@ fn tangent_joints_without_room_are_refused() {
 }
 
 /// Detection (`FitOptions::tangent_jump`) finds the joints of lines meeting arcs where they are,
-/// and none on a circle or an ellipse (smooth, the curvature varying by a factor 8).
+/// and none on a circle, an ellipse (smooth, the curvature varying by a factor 8) or a densely
+/// sampled noisy circle.
 #[test]
 fn tangent_joints_are_detected_where_the_curvature_jumps() {
     let tol = 1e-3;
@@ -358,7 +359,20 @@ fn tangent_joints_are_detected_where_the_curvature_jumps() {
         .iter()
         .map(|p| Vector2::new(p[0] / 2.0, p[1]))
         .collect();
-    for data in [ellipse, circle] {
+    // 20,000 points of the unit circle with radial noise of ±2.5·10⁻⁴ (a quarter of the
+    // tolerance).
+    let mut state = 7_u64;
+    let noisy: Vec<Vector2> = (0..20_000)
+        .map(|k| {
+            state = state
+                .wrapping_mul(6_364_136_223_846_793_005)
+                .wrapping_add(1_442_695_040_888_963_407);
+            let noise = 2.5e-4 * (2.0 * ((state >> 11) as f64 / (1u64 << 53) as f64) - 1.0);
+            let t = 2.0 * PI * k as f64 / 20_000.0;
+            Vector2::new((1.0 + noise) * t.cos(), (1.0 + noise) * t.sin())
+        })
+        .collect();
+    for data in [ellipse, circle, noisy] {
         let f = fit(&data, Closure::Closed, &detecting).unwrap();
         assert!(f.tangents.is_empty(), "{:?}", f.tangents);
     }

@@ -379,8 +379,9 @@ pub struct Fit<const D: usize> {
     /// Data indices of the fitting points (the curve's knots), increasing; segment j covers data
     /// `fitting[j]..=fitting[j+1]` (wrapping for closed data).
     pub fitting: Vec<usize>,
-    /// Data indices of the tangent joints (fitting points whose knot is double, see
-    /// [`fit_with_joints`]), increasing; empty without them.
+    /// Data indices of the tangent joints, given ([`fit_with_joints`]) or detected
+    /// ([`FitOptions::tangent_jump`]): fitting points whose knot is double, increasing; empty
+    /// without them.
     pub tangents: Vec<usize>,
     /// Data indices of the initial fitting points (round 0).
     pub initial: Vec<usize>,

@@ -10,8 +10,9 @@
 //! their refinement (Sec. 2.1), their exact evaluation at any parameter with first and second
 //! derivatives (Sec. 2.2), exact conversion of every segment to a cubic Bézier curve, and the
 //! adaptive fitting of such curves to ordered data points (Secs. 3–5, [`fit`]), with a per-round
-//! report, a two-sided error measure, a least-squares mode and corners whose turn stays within
-//! [`FitOptions::corner_tolerance`] of the data's beyond the paper.
+//! report, a two-sided error measure, a least-squares mode, corners whose turn stays within
+//! [`FitOptions::corner_tolerance`] of the data's and tangent joints (given to [`fit_with_joints`]
+//! or detected with [`FitOptions::tangent_jump`]) beyond the paper.
 //!
 //! The paper's eigen-structure closed form (Theorem 2, eq. 3) collapses, once its misprints are
 //! corrected, to one uniform cubic B-spline segment per polygon edge: a sharp vertex `p_i` acts as if

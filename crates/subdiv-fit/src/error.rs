@@ -128,6 +128,14 @@ pub enum SubdivFitError {
         /// What it lacks.
         reason: &'static str,
     },
+    /// A given tangent joint ([`crate::Joints::with_tangents`]) the fit cannot make.
+    #[error("tangent joint at data index {index}: {reason}")]
+    InvalidTangentJoint {
+        /// The data index given.
+        index: usize,
+        /// Why it cannot be one.
+        reason: &'static str,
+    },
     /// A given corner index is not a data index.
     #[error("corner index {index} is outside the {points} data points")]
     CornerOutOfRange {

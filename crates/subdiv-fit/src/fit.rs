@@ -16,8 +16,11 @@ use crate::curve::Closure;
 use crate::distance::PowerCubic;
 use crate::error::BestCurve;
 use crate::insertion::{insert_points, segment_range};
+use crate::joints::{Joints, balance, make_room};
 use crate::reduction::{MAX_REDUCED, fit_spans, reduce, respace_spans};
 use crate::seeding::seed;
+use crate::tangent_joints::detect_tangent_joints;
+use crate::tangent_rows::{joint_tangents, solve_with_tangents};
 use crate::tridiagonal::solve_tridiagonal;
 use crate::vertex::VertexKind;
 use crate::{SubdivCurve, SubdivFitError};
@@ -205,7 +208,21 @@ pub struct FitOptions {
     /// 2,667 with interpolation, 1.66 ms per glyph instead of 0.88.
     #[cfg_attr(feature = "serde", serde(default))]
     pub corner_tolerance: Option<f64>,
+    /// Detection of tangent joints (opt-in, with [`Seeding::Scaled`]): a data point becomes a
+    /// tangent joint, as if given to [`fit_with_joints`], where the one-sided quadratic estimates
+    /// of the data (reach 16 feature scales) agree in direction within 5° but their curvatures
+    /// differ by at least this fraction of the larger one, `|κ⁺ − κ⁻| / max(|κ⁺|, |κ⁻|)` (1
+    /// where a line meets an arc, `1 − ρ₁/ρ₂` where arcs of radii ρ₁ < ρ₂ meet), by a jump above
+    /// the estimates' noise (`|κ⁺ − κ⁻| · reach ≥ 0.005`), by as much at half the reach (a smooth
+    /// curve's estimates differ half as much there), and no point within the reach differs more.
+    /// [`TANGENT_JUMP`] (0.5) suits outlines of lines and arcs. Default `None` (no detection);
+    /// a value must lie in (0, 1].
+    #[cfg_attr(feature = "serde", serde(default))]
+    pub tangent_jump: Option<f64>,
 }
+
+/// A threshold for [`FitOptions::tangent_jump`]: curvatures that differ by half the larger one.
+pub const TANGENT_JUMP: f64 = 0.5;
 
 impl FitOptions {
     /// The defaults with the given tolerance.
@@ -225,6 +242,7 @@ impl FitOptions {
             insertion: Insertion::Bisect,
             reduction: Reduction::RemovePoints,
             corner_tolerance: None,
+            tangent_jump: None,
         }
     }
 
@@ -326,6 +344,14 @@ impl FitOptions {
         self
     }
 
+    /// With `tangent_jump` set to `value` (the threshold of tangent-joint detection, or `None`
+    /// for none).
+    #[must_use]
+    pub fn with_tangent_jump(mut self, value: Option<f64>) -> Self {
+        self.tangent_jump = value;
+        self
+    }
+
     /// With `insertion` set to `value` (the insertion rule).
     #[must_use]
     pub fn with_insertion(mut self, value: Insertion) -> Self {
@@ -355,11 +381,16 @@ pub struct RoundReport {
 #[derive(Debug, Clone, PartialEq)]
 #[non_exhaustive]
 pub struct Fit<const D: usize> {
-    /// The fitted curve: one control point per fitting point.
+    /// The fitted curve: one control point per fitting point, two per tangent joint (the
+    /// tangent vertex and its partner, which share the joint's knot).
     pub curve: SubdivCurve<D>,
-    /// Data indices of the fitting points, increasing; segment j covers data
+    /// Data indices of the fitting points (the curve's knots), increasing; segment j covers data
     /// `fitting[j]..=fitting[j+1]` (wrapping for closed data).
     pub fitting: Vec<usize>,
+    /// Data indices of the tangent joints, given ([`fit_with_joints`]) or detected
+    /// ([`FitOptions::tangent_jump`]): fitting points whose knot is double, increasing; empty
+    /// without them.
+    pub tangents: Vec<usize>,
     /// Data indices of the initial fitting points (round 0).
     pub initial: Vec<usize>,
     /// One report per round, round 0 first.
@@ -472,6 +503,15 @@ fn validate_options(o: &FitOptions) -> Result<(), SubdivFitError> {
             name: "corner_tolerance",
             value,
             reason: "must lie in (0, π]",
+        });
+    }
+    if let Some(value) = o.tangent_jump
+        && !(value > 0.0 && value <= 1.0)
+    {
+        return Err(SubdivFitError::InvalidOption {
+            name: "tangent_jump",
+            value,
+            reason: "must lie in (0, 1]",
         });
     }
     for (name, value, ok, reason) in checks {
@@ -691,20 +731,89 @@ pub fn fit_with_known_corners<const D: usize>(
     corners: &[Corner<D>],
     options: &FitOptions,
 ) -> Result<Fit<D>, SubdivFitError> {
-    match fit_checked(data, closure, corners, options) {
+    fit_given(data, closure, corners, &[], options)
+}
+
+/// [`fit_with_corners`] with tangent joints as well: the data points at [`Joints::tangents`] become
+/// fitting points whose control points are a [`VertexKind::Tangent`] vertex and its partner (a
+/// double knot), so the curve is tangent-continuous there while its curvature may jump, as where a
+/// straight side meets an arc tangentially (a regular vertex would be C2 and a sharp one a corner
+/// with zero curvature on both sides). The joints bound the spans of [`Seeding::Scaled`] as
+/// corners do, and each gets two regular fitting points on each side before any corner or end of
+/// the data (where there are fewer, the points between are placed again at equal chord-length
+/// steps, one more).
+///
+/// The pair's rows of eq. (4) interpolate the joint's data point and set the curve's first
+/// derivative there to the data's tangent (one-sided quadratic estimates, as for
+/// [`FitOptions::corner_tolerance`]) times the shorter of the two segments next to it; these fix
+/// the pair by themselves, so the two sides solve independently, as across a sharp vertex, and the
+/// system is a band of half-width 2, solved in O(k). The segments next to a joint are kept within
+/// a factor 2 of each other's length (the curve leaves the joint on both sides with one speed).
+/// With tangent joints the fit interpolates in every [`FitMode`], applies no
+/// [`FitOptions::corner_tolerance`] and no [`Reduction`] (the least-squares rows, the corner bound
+/// and the point removal do not know double knots yet): the curve of the last round is returned.
+///
+/// ```
+/// use subdiv_fit::{Closure, FitOptions, Joints, Vector2, VertexKind, fit_with_joints};
+///
+/// // A straight line into a quarter circle of radius 1, tangent at data point 40.
+/// let mut data: Vec<Vector2> = (0..40).map(|k| Vector2::new(-2.0 + k as f64 / 20.0, 0.0)).collect();
+/// data.extend((0..=40).map(|k| {
+///     let t = std::f64::consts::FRAC_PI_2 * k as f64 / 40.0;
+///     Vector2::new(t.sin(), 1.0 - t.cos())
+/// }));
+/// let joints = Joints::new().with_tangents(&[40]);
+/// let f = fit_with_joints(&data, Closure::Open, &joints, &FitOptions::new(1e-3))?;
+/// assert_eq!(f.tangents, [40]);
+/// assert_eq!(f.curve.kinds().iter().filter(|&&k| k == VertexKind::Tangent).count(), 1);
+/// assert_eq!(f.curve.points().len(), f.fitting.len() + 1);
+/// # Ok::<(), subdiv_fit::SubdivFitError>(())
+/// ```
+///
+/// # Errors
+/// As [`fit_with_corners`], and [`SubdivFitError::InvalidTangentJoint`] for a tangent joint
+/// outside the data, at an end of open data, at a given corner, or without data for two fitting
+/// points between it and a corner or an end.
+pub fn fit_with_joints<const D: usize>(
+    data: &[Vector<D>],
+    closure: Closure,
+    joints: &Joints,
+    options: &FitOptions,
+) -> Result<Fit<D>, SubdivFitError> {
+    let corners: Vec<Corner<D>> = joints.corners().iter().map(|&i| Corner::new(i)).collect();
+    fit_given(data, closure, &corners, joints.tangents(), options)
+}
+
+/// The fit with given corners and tangent joints; one that ends with
+/// [`SubdivFitError::NoConvergence`] under [`FitOptions::corner_tolerance`] is repeated without it.
+fn fit_given<const D: usize>(
+    data: &[Vector<D>],
+    closure: Closure,
+    corners: &[Corner<D>],
+    tangents: &[usize],
+    options: &FitOptions,
+) -> Result<Fit<D>, SubdivFitError> {
+    match fit_checked(data, closure, corners, tangents, options) {
         // The corners' bound moves control points: without it the distance alone may be met.
         Err(SubdivFitError::NoConvergence { .. }) if options.corner_tolerance.is_some() => {
-            fit_checked(data, closure, corners, &options.with_corner_tolerance(None))
+            fit_checked(
+                data,
+                closure,
+                corners,
+                tangents,
+                &options.with_corner_tolerance(None),
+            )
         }
         result => result,
     }
 }
 
-/// [`fit_with_known_corners`] without the retry.
+/// [`fit_given`] without the retry.
 fn fit_checked<const D: usize>(
     data: &[Vector<D>],
     closure: Closure,
     corners: &[Corner<D>],
+    tangents: &[usize],
     options: &FitOptions,
 ) -> Result<Fit<D>, SubdivFitError> {
     let closed = closure.is_closed();
@@ -718,10 +827,12 @@ fn fit_checked<const D: usize>(
             points: n,
         });
     }
-    let mut given: Vec<usize> = corners.iter().map(Corner::index).collect();
-    given.sort_unstable();
-    given.dedup();
+    let indices: Vec<usize> = corners.iter().map(Corner::index).collect();
+    let joints = Joints::new().with_corners(&indices).with_tangents(tangents);
+    joints.check(n, closed)?;
+    let given = joints.corners();
     let chords = ChordLengths::robust(data, closed, anchor_spacing(options));
+    let mut tangents = joints.tangents().to_vec();
     let mut fitting: Vec<(usize, bool)> = match options.seeding {
         Seeding::CurvatureMaxima => {
             let mut f: Vec<(usize, bool)> = feature_points(
@@ -734,7 +845,7 @@ fn fit_checked<const D: usize>(
             .iter()
             .map(|f| (f.index, f.sharp))
             .collect();
-            for &c in &given {
+            for &c in given {
                 match f.binary_search_by_key(&c, |x| x.0) {
                     Ok(pos) => f[pos].1 = true,
                     Err(pos) => f.insert(pos, (c, true)),
@@ -743,7 +854,23 @@ fn fit_checked<const D: usize>(
             f
         }
         Seeding::Scaled => {
-            let found = scaled_corners_of(data, &chords, closed, &given, options);
+            // Detection runs away from the tangent joints too, which are no corners.
+            let mut known: Vec<usize> = given.iter().chain(&tangents).copied().collect();
+            known.sort_unstable();
+            let mut found = scaled_corners_of(data, &chords, closed, &known, options);
+            if let Some(threshold) = options.tangent_jump {
+                // Away from the corners and from the given tangent joints.
+                tangents.extend(detect_tangent_joints(
+                    data, &chords, closed, &found, threshold, options,
+                ));
+                tangents.sort_unstable();
+                tangents.dedup();
+                found.extend(&tangents);
+                found.sort_unstable();
+                found.dedup();
+            }
+            // The tangent joints bound the spans too (each side seeded on its own); `make_room`
+            // makes them regular.
             seed(
                 data,
                 &chords,
@@ -754,11 +881,26 @@ fn fit_checked<const D: usize>(
             )
         }
     };
+    let tangents = &tangents[..];
+    // With tangent joints: interpolation, no corner bound, no reduction (see `fit_with_joints`).
+    let options = &if tangents.is_empty() {
+        *options
+    } else {
+        FitOptions {
+            mode: FitMode::Interpolate,
+            corner_tolerance: None,
+            reduction: Reduction::Off,
+            ..*options
+        }
+    };
     if closed {
         while fitting.len() < 3 {
             split_largest_gap(&mut fitting, n);
         }
     }
+    make_room(&mut fitting, tangents, &chords, closed)?;
+    balance(&mut fitting, tangents, &chords, closed);
+    let directions = joint_tangents(data, &fitting, tangents, closed, sigma(options));
     // The sharp fitting points stay, so the tangents of the bounded corners are found once.
     let corner_tangents = CornerTangents::new(data, &fitting, closed, corners, options);
     let initial: Vec<usize> = fitting.iter().map(|f| f.0).collect();
@@ -775,11 +917,15 @@ fn fit_checked<const D: usize>(
     let mut round = 0;
     let mut measured = Vec::new();
     loop {
-        let curve = solve_curve(data, &corner_tangents, &fitting, closed, options)?;
+        let curve = if tangents.is_empty() {
+            solve_curve(data, &corner_tangents, &fitting, closed, options)?
+        } else {
+            solve_with_tangents(data, &fitting, tangents, &directions, closed)?
+        };
         let assessment = assess_reusing(data, &fitting, &curve, closed, options, &mut measured);
         reports.push(RoundReport {
             round,
-            control_points: fitting.len(),
+            control_points: curve.points().len(),
             max_data_to_curve: assessment.max_d2c,
             rms_data_to_curve: assessment.rms_d2c,
             max_curve_to_data: assessment.max_c2d,
@@ -811,27 +957,33 @@ fn fit_checked<const D: usize>(
                 round += 1;
                 continue;
             }
-            return Ok(finish(
-                data,
-                &corner_tangents,
-                &chords,
-                state,
-                initial,
-                reports,
-                options,
-            ));
+            return Ok(Fit {
+                tangents: tangents.to_vec(),
+                ..finish(
+                    data,
+                    &corner_tangents,
+                    &chords,
+                    state,
+                    initial,
+                    reports,
+                    options,
+                )
+            });
         }
         if let Some(state) = within.take() {
             reports.truncate(state.round + 1);
-            return Ok(finish(
-                data,
-                &corner_tangents,
-                &chords,
-                state,
-                initial,
-                reports,
-                options,
-            ));
+            return Ok(Fit {
+                tangents: tangents.to_vec(),
+                ..finish(
+                    data,
+                    &corner_tangents,
+                    &chords,
+                    state,
+                    initial,
+                    reports,
+                    options,
+                )
+            });
         }
         if best.as_ref().is_none_or(|b| worst < b.1) {
             best = Some((curve.clone(), worst));
@@ -843,7 +995,8 @@ fn fit_checked<const D: usize>(
                 options.insertion,
                 &chords,
                 closed,
-            ) == 0
+            ) + balance(&mut fitting, tangents, &chords, closed)
+                == 0
         {
             return Err(SubdivFitError::NoConvergence {
                 rounds: round,
@@ -911,6 +1064,7 @@ fn span_fit<const D: usize>(
     Some(Fit {
         curve,
         fitting: fitting.iter().map(|f| f.0).collect(),
+        tangents: Vec::new(),
         initial: Vec::new(),
         reports,
         reduced,
@@ -952,6 +1106,7 @@ fn finish<const D: usize>(
     Fit {
         curve,
         fitting: fitting.iter().map(|f| f.0).collect(),
+        tangents: Vec::new(),
         initial,
         reports,
         reduced,

@@ -10,8 +10,9 @@
 //! their refinement (Sec. 2.1), their exact evaluation at any parameter with first and second
 //! derivatives (Sec. 2.2), exact conversion of every segment to a cubic Bézier curve, and the
 //! adaptive fitting of such curves to ordered data points (Secs. 3–5, [`fit`]), with a per-round
-//! report, a two-sided error measure, a least-squares mode and corners whose turn stays within
-//! [`FitOptions::corner_tolerance`] of the data's beyond the paper.
+//! report, a two-sided error measure, a least-squares mode, corners whose turn stays within
+//! [`FitOptions::corner_tolerance`] of the data's and tangent joints (given to [`fit_with_joints`]
+//! or detected with [`FitOptions::tangent_jump`]) beyond the paper.
 //!
 //! The paper's eigen-structure closed form (Theorem 2, eq. 3) collapses, once its misprints are
 //! corrected, to one uniform cubic B-spline segment per polygon edge: a sharp vertex `p_i` acts as if
@@ -63,6 +64,7 @@
 //! ```
 
 mod assess;
+mod band_lu;
 mod banded;
 mod bspline;
 #[cfg(feature = "paper")]
@@ -79,6 +81,7 @@ pub mod eigen;
 mod error;
 mod fit;
 mod insertion;
+mod joints;
 mod knots;
 mod on_rays;
 #[cfg(feature = "kurbo")]
@@ -89,6 +92,8 @@ mod seeding;
 mod segment;
 mod svg;
 mod tangent;
+mod tangent_joints;
+mod tangent_rows;
 mod tridiagonal;
 mod vertex;
 
@@ -102,9 +107,10 @@ pub use crate::distance::{foot_point, point_polyline_distance};
 pub use crate::error::{BestCurve, SubdivFitError};
 pub use crate::fit::{
     ErrorMeasure, Fit, FitMode, FitOptions, Insertion, MAX_DATA_COORDINATE, MAX_FEATURE_SCALE,
-    MAX_FIT_POINTS, MAX_ROUNDS, MAX_SAMPLES_PER_SEGMENT, Reduction, RoundReport, Seeding, fit,
-    fit_with_corners, fit_with_known_corners, scaled_corners,
+    MAX_FIT_POINTS, MAX_ROUNDS, MAX_SAMPLES_PER_SEGMENT, Reduction, RoundReport, Seeding,
+    TANGENT_JUMP, fit, fit_with_corners, fit_with_joints, fit_with_known_corners, scaled_corners,
 };
+pub use crate::joints::Joints;
 #[cfg(feature = "kurbo")]
 pub use crate::path::{
     PATH_CORNER_ANGLE, SampledContour, fit_bez_path, sample_bez_path, sample_svg_path,

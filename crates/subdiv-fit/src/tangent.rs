@@ -64,14 +64,19 @@ fn wrap(i: usize, offset: isize, n: usize) -> usize {
 /// tangent vertex, else 1 (also beyond the ends of an open polygon, where the phantom points
 /// continue the uniform knots).
 fn edge_length<const D: usize>(curve: &SubdivCurve<D>, j: isize) -> f64 {
-    let n = curve.points().len();
-    let kind = if curve.is_closed() {
-        Some(curve.kinds()[j.rem_euclid(n as isize) as usize])
+    knot_length(curve.kinds(), curve.is_closed(), j)
+}
+
+/// [`edge_length`] of a polygon with these vertex kinds.
+fn knot_length(kinds: &[VertexKind], closed: bool, j: isize) -> f64 {
+    let n = kinds.len();
+    let kind = if closed {
+        Some(kinds[j.rem_euclid(n as isize) as usize])
     } else {
         usize::try_from(j)
             .ok()
             .filter(|&j| j + 1 < n)
-            .map(|j| curve.kinds()[j])
+            .map(|j| kinds[j])
     };
     if kind == Some(VertexKind::Tangent) {
         0.0
@@ -96,17 +101,47 @@ pub(crate) fn edge_of_segment(tangents: &[usize], i: usize) -> usize {
 /// Whether the six knots of the segment on edge `e` are equally spaced (no double knot among
 /// them), so that the uniform closed form applies.
 pub(crate) fn span_is_uniform<const D: usize>(curve: &SubdivCurve<D>, e: usize) -> bool {
-    (-2..=2).all(|o| edge_length(curve, e as isize + o) == 1.0)
+    kinds_span_is_uniform(curve.kinds(), curve.is_closed(), e)
 }
 
 /// The knots `u₀ … u₅` of the segment on edge `e`, relative to its start.
 fn span_knots<const D: usize>(curve: &SubdivCurve<D>, e: usize) -> [f64; 6] {
+    knots_of(curve.kinds(), curve.is_closed(), e)
+}
+
+/// [`span_knots`] of a polygon with these vertex kinds.
+fn knots_of(kinds: &[VertexKind], closed: bool, e: usize) -> [f64; 6] {
     let e = e as isize;
-    let u1 = -edge_length(curve, e - 1);
-    let u0 = u1 - edge_length(curve, e - 2);
-    let u4 = 1.0 + edge_length(curve, e + 1);
-    let u5 = u4 + edge_length(curve, e + 2);
+    let u1 = -knot_length(kinds, closed, e - 1);
+    let u0 = u1 - knot_length(kinds, closed, e - 2);
+    let u4 = 1.0 + knot_length(kinds, closed, e + 1);
+    let u5 = u4 + knot_length(kinds, closed, e + 2);
     [u0, u1, 0.0, 1.0, u4, u5]
+}
+
+/// The weights of the control points `p_{e−1} … p_{e+2}` (indices modulo `n`) in the point at
+/// `x ∈ [0, 1]` of the segment on edge `e` of a polygon with these kinds, where that segment is
+/// next to a double knot (no phantom point): the blossom `f(x, x, x)` of unit control points.
+pub(crate) fn span_weights(
+    kinds: &[VertexKind],
+    closed: bool,
+    e: usize,
+    x: f64,
+) -> [(usize, f64); 4] {
+    let unit =
+        |i: usize| Vector::<4>::from(std::array::from_fn(|c| if c == i { 1.0 } else { 0.0 }));
+    let w = blossom(
+        &knots_of(kinds, closed, e),
+        &[unit(0), unit(1), unit(2), unit(3)],
+        [x, x, x],
+    );
+    let n = kinds.len();
+    [0, 1, 2, 3].map(|c| (wrap(e, c as isize - 1, n), w[c]))
+}
+
+/// Whether the segment on edge `e` of a polygon with these kinds has uniform knots.
+pub(crate) fn kinds_span_is_uniform(kinds: &[VertexKind], closed: bool, e: usize) -> bool {
+    (-2..=2).all(|o| knot_length(kinds, closed, e as isize + o) == 1.0)
 }
 
 /// The control points `p_{e−1} … p_{e+2}` of a segment next to a double knot (no phantom point:

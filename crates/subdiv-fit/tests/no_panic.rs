@@ -13,12 +13,13 @@ use bez_core::{BezierForm, MAX_COORDINATE};
 use proptest::prelude::*;
 use subdiv_fit::{
     BestCurve, CORNER_TOLERANCE, Closure, Corner, CurvePoint, EXACT_CORNER_TOLERANCE, ErrorMeasure,
-    FeaturePoint, Fit, FitMode, FitOptions, Insertion, MAX_DATA_COORDINATE, MAX_FEATURE_SCALE,
-    MAX_FIT_POINTS, MAX_REDUCED, MAX_ROUNDS, MAX_SAMPLES_PER_SEGMENT, Reduction, RoundReport,
-    SCALE_RATIO, Seeding, Segment, SubdivCurve, SubdivFitError, Vector2, Vector3, VertexKind,
-    bspline_basis, bspline_basis_d1, bspline_basis_d2, bspline_to_bezier, discrete_curvature,
-    feature_points, fit, fit_with_corners, fit_with_known_corners, foot_point,
-    point_polyline_distance, scaled_corners, svg_path, turning_angle,
+    FeaturePoint, Fit, FitMode, FitOptions, Insertion, Joints, MAX_DATA_COORDINATE,
+    MAX_FEATURE_SCALE, MAX_FIT_POINTS, MAX_REDUCED, MAX_ROUNDS, MAX_SAMPLES_PER_SEGMENT, Reduction,
+    RoundReport, SCALE_RATIO, Seeding, Segment, SubdivCurve, SubdivFitError, TANGENT_JUMP, Vector2,
+    Vector3, VertexKind, bspline_basis, bspline_basis_d1, bspline_basis_d2, bspline_to_bezier,
+    discrete_curvature, feature_points, fit, fit_with_corners, fit_with_joints,
+    fit_with_known_corners, foot_point, point_polyline_distance, scaled_corners, svg_path,
+    turning_angle,
 };
 
 fn wild() -> impl Strategy<Value = f64> {
@@ -96,14 +97,17 @@ fn options() -> impl Strategy<Value = FitOptions> {
             Just(1_000_000_000)
         ],
         any::<(bool, bool, bool, bool, bool)>(),
-        prop_oneof![
-            Just(None),
-            Just(Some(CORNER_TOLERANCE)),
-            wild().prop_map(Some)
-        ],
+        (
+            prop_oneof![
+                Just(None),
+                Just(Some(CORNER_TOLERANCE)),
+                wild().prop_map(Some)
+            ],
+            prop_oneof![Just(None), Just(Some(TANGENT_JUMP)), wild().prop_map(Some)],
+        ),
     )
         .prop_map(
-            |((tol, angle), scale, (floor, prominence), rounds, samples, flags, corner)| {
+            |((tol, angle), scale, (floor, prominence), rounds, samples, flags, (corner, jump))| {
                 let tol = if tol.is_finite() {
                     tol.abs().max(1e-12)
                 } else {
@@ -143,6 +147,7 @@ fn options() -> impl Strategy<Value = FitOptions> {
                         (false, _) => Reduction::Off,
                     })
                     .with_corner_tolerance(corner)
+                    .with_tangent_jump(jump)
             },
         )
 }
@@ -170,7 +175,12 @@ fn check_fit(result: &Result<Fit<2>, SubdivFitError>, n: usize) -> Result<(), Te
             prop_assert!(curve_ok(&f.curve));
             prop_assert!(f.reports.iter().all(report_ok));
             prop_assert!(f.fitting.iter().all(|&i| i < n));
-            prop_assert_eq!(f.fitting.len(), f.curve.points().len());
+            prop_assert_eq!(f.fitting.len() + f.tangents.len(), f.curve.points().len());
+            prop_assert!(
+                f.tangents
+                    .iter()
+                    .all(|t| f.fitting.binary_search(t).is_ok())
+            );
             prop_assert!(f.initial.iter().all(|&i| i < n));
             prop_assert!(f.last().is_some() && f.rounds() + 1 == f.reports.len());
             prop_assert!(f.reduced.iter().all(report_ok));
@@ -328,6 +338,10 @@ proptest! {
             .collect();
         let bounded = opts.with_corner_tolerance(Some(EXACT_CORNER_TOLERANCE));
         check_fit(&fit_with_known_corners(&data, closure, &known, &bounded), n)?;
+        let joints = Joints::new().with_corners(&corners[..corners.len() / 2]).with_tangents(&corners[corners.len() / 2..]);
+        prop_assert!(joints.corners().windows(2).all(|w| w[0] < w[1]));
+        prop_assert!(joints.tangents().windows(2).all(|w| w[0] < w[1]));
+        check_fit(&fit_with_joints(&data, closure, &joints, &opts), n)?;
         if let Ok(found) = scaled_corners(&data, closure, &opts) {
             prop_assert!(found.windows(2).all(|w| w[0] < w[1]) && found.iter().all(|&i| i < n));
         }

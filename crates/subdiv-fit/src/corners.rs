@@ -42,7 +42,8 @@ pub(crate) fn detect_corners<const D: usize>(
 ) -> Vec<usize> {
     let n = data.len();
     let total = chords.total();
-    if n < 3 || total <= 0.0 || min_turn > std::f64::consts::PI {
+    // No turn exceeds π: a smallest turn of π (`sharp_angle` = 0) finds nothing to add.
+    if n < 3 || total <= 0.0 || min_turn >= std::f64::consts::PI {
         return given.to_vec();
     }
     // (index, scale, turn at half scale) of every candidate.

@@ -203,8 +203,14 @@ fn end_tangent(c: &BezierCurve<2>) -> Option<Vector2> {
 
 /// Fits every subpath of `path` ([`fit_with_known_corners`] on its samples about every
 /// `tolerance`, the path's corners given as known corners with the path's exact tangents there, so
-/// that [`FitOptions::corner_tolerance`] bounds the turns against the outline itself) and returns the fitted curves as one path of
-/// cubic Bézier segments, with the fits. Subpaths with fewer than 3 samples are left out.
+/// that [`FitOptions::corner_tolerance`] bounds the turns against the outline itself) and returns
+/// the fitted curves as one path of cubic Bézier segments, with the fits. Subpaths with fewer than
+/// 3 samples are left out.
+///
+/// The path states its tangent discontinuities exactly, so they are all its corners: no other
+/// corner is detected on its samples ([`FitOptions::sharp_angle`] is taken as 0), and a bend that is smooth in the path stays
+/// smooth in the fit, however tight. To have tight bends detected as corners as well, fit
+/// [`sample_bez_path`]'s samples with [`fit_with_known_corners`].
 ///
 /// ```
 /// use subdiv_fit::{FitOptions, fit_bez_path};
@@ -226,12 +232,13 @@ pub fn fit_bez_path(
 ) -> Result<(BezPath, Vec<Fit<2>>), SubdivFitError> {
     let mut out = BezPath::new();
     let mut fits = Vec::new();
+    let only_given = options.with_sharp_angle(0.0);
     for contour in sample_bez_path(path, options.tolerance)? {
         if contour.points.len() < 3 {
             continue;
         }
         let known = contour.known_corners();
-        let f = fit_with_known_corners(&contour.points, contour.closure, &known, options)?;
+        let f = fit_with_known_corners(&contour.points, contour.closure, &known, &only_given)?;
         for el in f.curve.to_bez_path()?.elements() {
             out.push(*el);
         }

@@ -472,3 +472,31 @@ fn fit_bez_path_keeps_the_paths_corner_turns() {
         );
     }
 }
+
+/// A path states all its corners: `fit_bez_path` adds no sharp vertex where the path is smooth,
+/// however tight the bend. A rounded rectangle whose corner radius (10⁻³) is below the feature
+/// scale (6 × the tolerance) has four bends that the detection on the samples takes for corners;
+/// through `fit_bez_path` the fit has none and still meets the tolerance.
+#[cfg(feature = "kurbo")]
+#[test]
+fn fit_bez_path_adds_no_corner_where_the_path_is_smooth() {
+    let path = kurbo::Shape::to_path(&kurbo::RoundedRect::new(0.0, 0.0, 1.0, 0.6, 1e-3), 1e-9);
+    let tol = 1e-3;
+    let opts = FitOptions::new(tol);
+    let (_, fits) = subdiv_fit::fit_bez_path(&path, &opts).unwrap();
+    assert_eq!(fits.len(), 1);
+    let f = &fits[0];
+    let r = f.last().unwrap();
+    assert!(
+        r.max_data_to_curve <= tol && r.max_curve_to_data <= tol,
+        "{r:?}"
+    );
+    let sharp = (0..f.curve.points().len())
+        .filter(|&j| f.curve.is_sharp(j))
+        .count();
+    assert_eq!(sharp, 0);
+    // The same samples with the detection: the four tight bends become corners.
+    let contour = &subdiv_fit::sample_bez_path(&path, tol).unwrap()[0];
+    let found = subdiv_fit::scaled_corners(&contour.points, contour.closure, &opts).unwrap();
+    assert_eq!(found.len(), 4, "{found:?}");
+}

@@ -497,6 +497,6 @@ fn fit_bez_path_adds_no_corner_where_the_path_is_smooth() {
     assert_eq!(sharp, 0);
     // The same samples with the detection: the four tight bends become corners.
     let contour = &subdiv_fit::sample_bez_path(&path, tol).unwrap()[0];
-    let found = subdiv_fit::scaled_corners(&contour.points, contour.closure, &opts).unwrap();
+    let found = scaled_corners(&contour.points, contour.closure, &opts).unwrap();
     assert_eq!(found.len(), 4, "{found:?}");
 }

@@ -113,7 +113,7 @@ pub use crate::fit::{
 pub use crate::joints::Joints;
 #[cfg(feature = "kurbo")]
 pub use crate::path::{
-    PATH_CORNER_ANGLE, SampledContour, fit_bez_path, sample_bez_path, sample_svg_path,
+    JOINT_ROOM, PATH_CORNER_ANGLE, SampledContour, fit_bez_path, sample_bez_path, sample_svg_path,
 };
 pub use crate::reduction::MAX_REDUCED;
 pub use crate::segment::Segment;

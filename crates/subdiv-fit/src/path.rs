@@ -7,8 +7,8 @@ use kurbo::{BezPath, Point};
 
 use crate::curvature::angle_between;
 use crate::{
-    Closure, Corner, Fit, FitOptions, MAX_FIT_POINTS, SubdivCurve, SubdivFitError,
-    fit_with_known_corners,
+    Closure, Corner, Fit, FitOptions, Joints, MAX_FIT_POINTS, SubdivCurve, SubdivFitError,
+    fit_with_joints, fit_with_known_corners,
 };
 
 /// A joint of a path where the tangent turns by more than this (radians, 1°) is a corner.
@@ -29,6 +29,11 @@ pub struct SampledContour {
     /// The path's incoming and outgoing tangent directions at each corner (one per entry of
     /// `corners`; the tangents of the segments that meet there, not normalized).
     pub corner_tangents: Vec<(Vector2, Vector2)>,
+    /// The smooth joints (the tangent turns by at most [`PATH_CORNER_ANGLE`]) with the signed
+    /// curvatures of the two segments that meet there: (sample index, incoming, outgoing),
+    /// increasing. Where they differ the joint is tangent-continuous with a curvature jump
+    /// ([`SampledContour::tangent_joints`]).
+    pub smooth_joints: Vec<(usize, f64, f64)>,
 }
 
 impl SampledContour {
@@ -43,7 +48,43 @@ impl SampledContour {
             .map(|(&i, &(a, b))| Corner::with_tangents(i, a, b).unwrap_or(Corner::new(i)))
             .collect()
     }
+
+    /// The smooth joints whose one-sided curvatures differ by at least `threshold` times the
+    /// larger one (the rule of [`FitOptions::tangent_jump`], here on the path's exact curvatures),
+    /// with at least [`JOINT_ROOM`] samples to the nearest corner, end of an open subpath or other
+    /// such joint (a joint closer to one already taken, in the path's order, is left out): the tangent joints
+    /// [`fit_bez_path`] gives [`fit_with_joints`].
+    #[must_use]
+    pub fn tangent_joints(&self, threshold: f64) -> Vec<usize> {
+        let n = self.points.len();
+        let closed = self.closure.is_closed();
+        let gap = |a: usize, b: usize| {
+            let d = a.abs_diff(b);
+            if closed { d.min(n - d) } else { d }
+        };
+        let mut taken: Vec<usize> = Vec::new();
+        for &(i, k_in, k_out) in &self.smooth_joints {
+            let jump = (k_in - k_out).abs();
+            let larger = k_in.abs().max(k_out.abs());
+            let ends = !closed && (i < JOINT_ROOM || i + JOINT_ROOM >= n);
+            if jump.is_finite()
+                && larger > 0.0
+                && jump >= threshold * larger
+                && !ends
+                && self.corners.iter().all(|&c| gap(c, i) >= JOINT_ROOM)
+                && taken.last().is_none_or(|&t| gap(t, i) >= JOINT_ROOM)
+                && taken.first().is_none_or(|&t| gap(t, i) >= JOINT_ROOM)
+            {
+                taken.push(i);
+            }
+        }
+        taken
+    }
 }
+
+/// Samples that a tangent joint of a path needs to its nearest corner, end or other joint: room
+/// for the two regular fitting points on each side that a tangent vertex's double knot reaches.
+pub const JOINT_ROOM: usize = 6;
 
 /// Samples every subpath of `path` about every `spacing` (each segment at equal parameter steps,
 /// as many as its control polygon is long in spacings), keeping every segment's end points (so the
@@ -135,12 +176,14 @@ fn sample_subpath(sub: &[BezierCurve<2>], counts: &[usize]) -> SampledContour {
             closure: Closure::Open,
             corners: Vec::new(),
             corner_tangents: Vec::new(),
+            smooth_joints: Vec::new(),
         };
     };
     let closed = first.start() == last.end() && sub.len() > 1;
     let mut points: Vec<Vector2> = Vec::new();
     let mut corners: Vec<usize> = Vec::new();
     let mut corner_tangents: Vec<(Vector2, Vector2)> = Vec::new();
+    let mut smooth_joints: Vec<(usize, f64, f64)> = Vec::new();
     for (j, (c, &m)) in sub.iter().zip(counts).enumerate() {
         let joint = if j > 0 {
             Some(&sub[j - 1])
@@ -151,6 +194,15 @@ fn sample_subpath(sub: &[BezierCurve<2>], counts: &[usize]) -> SampledContour {
         };
         if points.last() != Some(&c.start()) {
             points.push(c.start());
+        }
+        if let Some(prev) = joint
+            && let (Some(a), Some(b)) = (end_tangent(prev), start_tangent(c))
+            && angle_between(&a, &b) <= PATH_CORNER_ANGLE
+            && let (Ok(k_in), Ok(k_out)) = (prev.signed_curvature(1.0), c.signed_curvature(0.0))
+            && (k_in.is_finite() && k_out.is_finite())
+            && smooth_joints.last().is_none_or(|l| l.0 < points.len() - 1)
+        {
+            smooth_joints.push((points.len() - 1, k_in, k_out));
         }
         if let Some(prev) = joint
             && let (Some(a), Some(b)) = (end_tangent(prev), start_tangent(c))
@@ -187,6 +239,7 @@ fn sample_subpath(sub: &[BezierCurve<2>], counts: &[usize]) -> SampledContour {
         closure: Closure::from_closed(closed),
         corners,
         corner_tangents,
+        smooth_joints,
     }
 }
 
@@ -210,7 +263,11 @@ fn end_tangent(c: &BezierCurve<2>) -> Option<Vector2> {
 /// The path states its tangent discontinuities exactly, so they are all its corners: no other
 /// corner is detected on its samples ([`FitOptions::sharp_angle`] is taken as 0), and a bend that is smooth in the path stays
 /// smooth in the fit, however tight. To have tight bends detected as corners as well, fit
-/// [`sample_bez_path`]'s samples with [`fit_with_known_corners`].
+/// [`sample_bez_path`]'s samples with [`fit_with_known_corners`]. Likewise with
+/// [`FitOptions::tangent_jump`] set, the tangent joints are the path's own smooth joints where the
+/// curvature jumps by the threshold ([`SampledContour::tangent_joints`], on the exact curvatures;
+/// none is detected on the samples), and the fit takes them with [`fit_with_joints`] (which
+/// interpolates without reduction, see there).
 ///
 /// ```
 /// use subdiv_fit::{FitOptions, fit_bez_path};
@@ -232,13 +289,24 @@ pub fn fit_bez_path(
 ) -> Result<(BezPath, Vec<Fit<2>>), SubdivFitError> {
     let mut out = BezPath::new();
     let mut fits = Vec::new();
-    let only_given = options.with_sharp_angle(0.0);
+    let only_given = options.with_sharp_angle(0.0).with_tangent_jump(None);
     for contour in sample_bez_path(path, options.tolerance)? {
         if contour.points.len() < 3 {
             continue;
         }
-        let known = contour.known_corners();
-        let f = fit_with_known_corners(&contour.points, contour.closure, &known, &only_given)?;
+        let joints = options
+            .tangent_jump
+            .map(|threshold| contour.tangent_joints(threshold))
+            .unwrap_or_default();
+        let f = if joints.is_empty() {
+            let known = contour.known_corners();
+            fit_with_known_corners(&contour.points, contour.closure, &known, &only_given)?
+        } else {
+            let given = Joints::new()
+                .with_corners(&contour.corners)
+                .with_tangents(&joints);
+            fit_with_joints(&contour.points, contour.closure, &given, &only_given)?
+        };
         for el in f.curve.to_bez_path()?.elements() {
             out.push(*el);
         }

@@ -364,13 +364,20 @@ proptest! {
 mod paths {
     use super::*;
     use subdiv_fit::{
-        PATH_CORNER_ANGLE, SampledContour, fit_bez_path, sample_bez_path, sample_svg_path,
+        JOINT_ROOM, PATH_CORNER_ANGLE, SampledContour, TANGENT_JUMP, fit_bez_path, sample_bez_path,
+        sample_svg_path,
     };
 
     fn sampled_ok(contours: &[SampledContour]) -> bool {
         contours.iter().all(|c| {
             c.points.iter().all(finite)
                 && c.corners.iter().all(|&i| i < c.points.len())
+                && c.smooth_joints
+                    .iter()
+                    .all(|j| j.0 < c.points.len() && j.1.is_finite() && j.2.is_finite())
+                && c.tangent_joints(TANGENT_JUMP)
+                    .iter()
+                    .all(|&i| i < c.points.len())
                 && c.points.windows(2).all(|w| w[0] != w[1])
         })
     }
@@ -402,7 +409,9 @@ mod paths {
             }
             if let Ok(c) = sample_bez_path(&path, spacing) { prop_assert!(sampled_ok(&c)); }
             let start = Instant::now();
-            if let Ok((out, fits)) = fit_bez_path(&path, &FitOptions::new(tol)) {
+            // With the path's tangent joints too (every smooth joint whose curvature jumps at all).
+            for opts in [FitOptions::new(tol), FitOptions::new(tol).with_tangent_jump(Some(1e-9))] {
+            if let Ok((out, fits)) = fit_bez_path(&path, &opts) {
                 let path_ok = out.elements().iter().all(|e| match e {
                     kurbo::PathEl::MoveTo(p) | kurbo::PathEl::LineTo(p) => p.is_finite(),
                     kurbo::PathEl::QuadTo(a, b) => a.is_finite() && b.is_finite(),
@@ -411,6 +420,7 @@ mod paths {
                 });
                 prop_assert!(path_ok);
                 prop_assert!(fits.iter().all(|f| curve_ok(&f.curve)));
+            }
             }
             prop_assert!(start.elapsed() < Duration::from_secs(10));
             let svg = format!("M {} {} L 1 0 Q 1 1 0 1 Z", coords.first().unwrap_or(&0.0), coords.last().unwrap_or(&0.0));
@@ -449,6 +459,10 @@ mod paths {
             Some((Vector2::new(0.0, -1.0), Vector2::new(1.0, 0.0)))
         );
         const { assert!(PATH_CORNER_ANGLE < 0.1) };
+        const { assert!(JOINT_ROOM >= 4) };
+        // A line into a half circle: one smooth joint, curvature 0 in and 1 out.
+        let hook = sample_svg_path("M-2 0 L0 0 A1 1 0 0 1 0 2", 0.05).unwrap();
+        assert_eq!(hook[0].tangent_joints(TANGENT_JUMP), [40]);
         let c = SubdivCurve::smooth(square[0].points.clone(), Closure::Closed).unwrap();
         assert_eq!(c.to_bez_path().unwrap().segments().count(), 16);
     }

@@ -3,8 +3,8 @@
 
 use subdiv_fit::{
     CORNER_TOLERANCE, Closure, Corner, EXACT_CORNER_TOLERANCE, FitMode, FitOptions,
-    MAX_SAMPLES_PER_SEGMENT, Reduction, SubdivFitError, Vector2, fit, fit_with_corners,
-    fit_with_known_corners, point_polyline_distance, scaled_corners,
+    MAX_SAMPLES_PER_SEGMENT, Reduction, SubdivFitError, TANGENT_JUMP, Vector2, fit,
+    fit_with_corners, fit_with_known_corners, point_polyline_distance, scaled_corners,
 };
 
 /// A deterministic uniform generator in [-1, 1].
@@ -499,4 +499,43 @@ fn fit_bez_path_adds_no_corner_where_the_path_is_smooth() {
     let contour = &subdiv_fit::sample_bez_path(&path, tol).unwrap()[0];
     let found = scaled_corners(&contour.points, contour.closure, &opts).unwrap();
     assert_eq!(found.len(), 4, "{found:?}");
+}
+
+/// With `tangent_jump` set, `fit_bez_path` gives the fit the path's own tangent joints: a stadium
+/// (two lines, two half circles) has four, where the lines (curvature 0) meet the arcs (curvature
+/// 1); the arcs' own joints (kurbo's cubics, nearly equal curvatures) and a circle's are none. The
+/// fit is tangent-continuous there, within the tolerance, and uses fewer control points than the
+/// fit without joints.
+#[cfg(feature = "kurbo")]
+#[test]
+fn fit_bez_path_takes_the_paths_tangent_joints() {
+    let stadium =
+        kurbo::BezPath::from_svg("M0 0 L2 0 A1 1 0 0 1 2 2 L0 2 A1 1 0 0 1 0 0 Z").unwrap();
+    let tol = 1e-4;
+    let contour = &subdiv_fit::sample_bez_path(&stadium, tol).unwrap()[0];
+    assert!(contour.corners.is_empty(), "{:?}", contour.corners);
+    let joints = contour.tangent_joints(TANGENT_JUMP);
+    assert_eq!(joints.len(), 4, "{joints:?}");
+    for &i in &joints {
+        let p = contour.points[i];
+        let on_joint = [(0.0, 0.0), (2.0, 0.0), (2.0, 2.0), (0.0, 2.0)]
+            .iter()
+            .any(|&(x, y)| (p.x() - x).hypot(p.y() - y) < 1e-12);
+        assert!(on_joint, "{p:?}");
+    }
+    let opts = FitOptions::new(tol).with_tangent_jump(Some(TANGENT_JUMP));
+    let (_, fits) = subdiv_fit::fit_bez_path(&stadium, &opts).unwrap();
+    let f = &fits[0];
+    assert_eq!(f.tangents, joints);
+    let r = f.last().unwrap();
+    assert!(
+        r.max_data_to_curve <= tol && r.max_curve_to_data <= tol,
+        "{r:?}"
+    );
+    let (_, plain) = subdiv_fit::fit_bez_path(&stadium, &FitOptions::new(tol)).unwrap();
+    let (with, without) = (f.curve.points().len(), plain[0].curve.points().len());
+    assert!(with < without, "{with} against {without}");
+    let circle = kurbo::Shape::to_path(&kurbo::Circle::new((0.0, 0.0), 1.0), 1e-9);
+    let round = &subdiv_fit::sample_bez_path(&circle, tol).unwrap()[0];
+    assert!(round.tangent_joints(TANGENT_JUMP).is_empty());
 }

@@ -916,6 +916,21 @@ fn fit_checked<const D: usize>(
     let mut within: Option<Within<D>> = None;
     let mut round = 0;
     let mut measured = Vec::new();
+    // The converged fit with its reductions, and the tangent joints it was given or found.
+    let done = |state, reports| {
+        Ok(Fit {
+            tangents: tangents.to_vec(),
+            ..finish(
+                data,
+                &corner_tangents,
+                &chords,
+                state,
+                initial,
+                reports,
+                options,
+            )
+        })
+    };
     loop {
         let curve = if tangents.is_empty() {
             solve_curve(data, &corner_tangents, &fitting, closed, options)?
@@ -957,33 +972,11 @@ fn fit_checked<const D: usize>(
                 round += 1;
                 continue;
             }
-            return Ok(Fit {
-                tangents: tangents.to_vec(),
-                ..finish(
-                    data,
-                    &corner_tangents,
-                    &chords,
-                    state,
-                    initial,
-                    reports,
-                    options,
-                )
-            });
+            return done(state, reports);
         }
         if let Some(state) = within.take() {
             reports.truncate(state.round + 1);
-            return Ok(Fit {
-                tangents: tangents.to_vec(),
-                ..finish(
-                    data,
-                    &corner_tangents,
-                    &chords,
-                    state,
-                    initial,
-                    reports,
-                    options,
-                )
-            });
+            return done(state, reports);
         }
         if best.as_ref().is_none_or(|b| worst < b.1) {
             best = Some((curve.clone(), worst));

@@ -39,6 +39,7 @@ use crate::SubdivCurve;
 use crate::chord::ChordLengths;
 use crate::corner::Corner;
 use crate::curvature::angle_between;
+use crate::curved_corner::side_line;
 use crate::fit::FitOptions;
 use crate::insertion::segment_range;
 
@@ -91,14 +92,31 @@ pub(crate) struct CornerTangents<const D: usize> {
     list: Vec<Bounded<D>>,
 }
 
-/// A ray `anchor + λ direction`, `λ > 0`, that control point `vertex` is constrained to: the
-/// tangent of a corner at `anchor` (its sharp vertex) on the side of `vertex`.
+/// A ray `anchor + λ direction`, `λ > 0`, that control point `vertex` less `partner.1` times the
+/// control point `partner.0` is constrained to: the tangent of a corner on the side of `vertex`
+/// (at a [`VertexKind::Sharp`](crate::VertexKind::Sharp) corner `vertex` itself on the ray from
+/// the corner, at a curved one the combination that the side's tangent follows, module
+/// `curved_corner`).
 #[derive(Debug, Clone, Copy)]
 pub(crate) struct Ray<const D: usize> {
     pub(crate) vertex: usize,
+    pub(crate) partner: Option<(usize, f64)>,
     pub(crate) anchor: Vector<D>,
     /// Unit direction.
     pub(crate) direction: Vector<D>,
+}
+
+impl<const D: usize> Ray<D> {
+    /// The constrained point `p[vertex] − c p[partner]` of `points`.
+    pub(crate) fn constrained(&self, points: &[Vector<D>]) -> Vector<D> {
+        let p = points[self.vertex];
+        self.partner.map_or(p, |(v, c)| p - points[v] * c)
+    }
+
+    /// `points` with `vertex` moved so that the constrained point is `target`.
+    fn place(&self, points: &mut [Vector<D>], target: Vector<D>) {
+        points[self.vertex] = self.partner.map_or(target, |(v, c)| target + points[v] * c);
+    }
 }
 
 /// How far a curve's corner is from the tangents it is bounded against.
@@ -197,10 +215,10 @@ impl<const D: usize> CornerTangents<D> {
 
 /// How far the curve's turn at vertex `j` is from the corner's.
 fn deviation<const D: usize>(curve: &SubdivCurve<D>, j: usize, corner: &Bounded<D>) -> Deviation {
-    let p = curve.points();
-    let k = p.len();
-    let incoming = p[j] - p[(j + k - 1) % k];
-    let outgoing = p[(j + 1) % k] - p[j];
+    let zero = Vector::<D>::zeros();
+    let (incoming, outgoing) = curve.corner_tangents(j).map_or((zero, zero), |(i, o)| {
+        (i.unwrap_or(zero), o.unwrap_or(zero))
+    });
     let turn = angle_between(&incoming, &outgoing);
     let data_turn = angle_between(&corner.incoming, &corner.outgoing);
     Deviation {
@@ -220,6 +238,29 @@ pub(crate) fn corner_rays<const D: usize>(
     curve: &SubdivCurve<D>,
     movable: impl Fn(usize) -> bool,
 ) -> Vec<Ray<D>> {
+    corner_sides(corners, fitting, curve, movable)
+        .into_iter()
+        .map(|side| side.ray)
+        .collect()
+}
+
+/// One side of a bounded corner that [`corner_rays`] constrains.
+struct Side<'a, const D: usize> {
+    ray: Ray<D>,
+    /// The corner's vertex.
+    corner: usize,
+    /// The side: after the corner (`true`) or before it.
+    forwards: bool,
+    bounded: &'a Bounded<D>,
+}
+
+/// The sides behind [`corner_rays`].
+fn corner_sides<'a, const D: usize>(
+    corners: &'a CornerTangents<D>,
+    fitting: &'a [(usize, bool)],
+    curve: &SubdivCurve<D>,
+    movable: impl Fn(usize) -> bool,
+) -> Vec<Side<'a, D>> {
     let k = fitting.len();
     let found: Vec<(usize, &Bounded<D>)> = corners.at(fitting).collect();
     let mut claims = vec![0u8; k];
@@ -227,46 +268,121 @@ pub(crate) fn corner_rays<const D: usize>(
         claims[(j + k - 1) % k] += 1;
         claims[(j + 1) % k] += 1;
     }
-    let mut rays = Vec::new();
+    let mut sides = Vec::new();
     for (j, c) in found {
-        for (vertex, direction) in [((j + k - 1) % k, -c.incoming), ((j + 1) % k, c.outgoing)] {
+        if !movable((j + k - 1) % k) && !movable((j + 1) % k) {
+            continue;
+        }
+        for (forwards, direction) in [(false, -c.incoming), (true, c.outgoing)] {
+            let Some(line) = side_line(
+                curve.kinds(),
+                curve.points(),
+                curve.is_closed(),
+                j,
+                forwards,
+            ) else {
+                continue;
+            };
+            let vertex = line.vertex;
             if !fitting[vertex].1 && claims[vertex] == 1 && movable(vertex) {
-                rays.push(Ray {
-                    vertex,
-                    anchor: curve.points()[j],
-                    direction,
+                sides.push(Side {
+                    ray: Ray {
+                        vertex,
+                        partner: line.partner,
+                        anchor: line.anchor,
+                        direction,
+                    },
+                    corner: j,
+                    forwards,
+                    bounded: c,
                 });
             }
         }
     }
-    rays
+    sides
+}
+
+/// The share of the bound `bound` that one side of a corner may take (the turn's error is at most
+/// the sum of the two sides' deviations): what the other side leaves when that side is settled
+/// (it will not move again, with deviation `other`), else half.
+fn allowance(bound: f64, other: f64, settled: bool) -> f64 {
+    if settled {
+        (bound - other).max(0.0)
+    } else {
+        0.5 * bound
+    }
+}
+
+/// Whether the side of corner vertex `j` (of `curve`, fitting points `fitting`) before or after it
+/// (`forwards`) is settled: its control points do not move (not `movable`) and `settled` names it
+/// by the corner's data index (a straight edge to the next sharp point is not settled by itself:
+/// its span may still gain points).
+fn side_settled<const D: usize>(
+    curve: &SubdivCurve<D>,
+    fitting: &[(usize, bool)],
+    j: usize,
+    forwards: bool,
+    movable: &impl Fn(usize) -> bool,
+    settled: &impl Fn(usize, bool) -> bool,
+) -> bool {
+    let Some(line) = side_line(
+        curve.kinds(),
+        curve.points(),
+        curve.is_closed(),
+        j,
+        forwards,
+    ) else {
+        return true;
+    };
+    !movable(line.vertex)
+        && line.partner.is_none_or(|(w, _)| !movable(w))
+        && settled(fitting[j].0, forwards)
 }
 
 /// The rays of [`corner_rays`] for the sides of the corners where the curve `fitted` (fitting points
-/// `fitting`) leaves the corner's tangent by more than `slack` (radians, below 90°), each turned
-/// from the tangent towards the curve's polygon edge by `slack`: the boundary of the cone of
-/// directions within `slack` that is nearest to the unconstrained fit (a side that points backwards
-/// gets the tangent itself). Empty when every side is within `slack`.
+/// `fitting`) leaves the corner's tangent by more than the side's share of `bound` ([`allowance`];
+/// `settled` tells which sides outside the `movable` points are final), each turned from the
+/// tangent towards the curve's side by that share (capped below 90°): the boundary of the cone
+/// of directions within it that is nearest to the unconstrained fit (a side that points backwards
+/// gets the tangent itself). Empty when every side is within its share. The shares are just inside
+/// their values, so that the side checks pass despite rounding.
 pub(crate) fn cone_rays<const D: usize>(
     corners: &CornerTangents<D>,
     fitting: &[(usize, bool)],
     fitted: &SubdivCurve<D>,
-    slack: f64,
+    bound: f64,
     movable: impl Fn(usize) -> bool,
+    settled: impl Fn(usize, bool) -> bool,
 ) -> Vec<Ray<D>> {
-    let mut rays = corner_rays(corners, fitting, fitted, movable);
-    rays.retain_mut(|ray| {
-        let edge = fitted.points()[ray.vertex] - ray.anchor;
+    let mut rays = Vec::new();
+    for side in corner_sides(corners, fitting, fitted, &movable) {
+        let d = deviation(fitted, side.corner, side.bounded);
+        let other = if side.forwards {
+            d.incoming
+        } else {
+            d.outgoing
+        };
+        let other_settled = side_settled(
+            fitted,
+            fitting,
+            side.corner,
+            !side.forwards,
+            &movable,
+            &settled,
+        );
+        let slack = allowance(bound, other, other_settled).min(1.5) * (1.0 - 1e-6);
+        let mut ray = side.ray;
+        let edge = ray.constrained(fitted.points()) - ray.anchor;
         if angle_between(&edge, &ray.direction) <= slack {
-            return false;
+            continue;
         }
         let across = edge - ray.direction * edge.dot(&ray.direction);
         let norm = across.norm();
         if edge.dot(&ray.direction) > 0.0 && norm > 0.0 {
             ray.direction = ray.direction * slack.cos() + across * (slack.sin() / norm);
         }
-        true
-    });
+        rays.push(ray);
+    }
     rays
 }
 
@@ -284,10 +400,12 @@ pub(crate) fn neighbours_on_tangents<const D: usize>(
     let mut points = curve.points().to_vec();
     let mut moved = vec![false; points.len()];
     for ray in corner_rays(corners, fitting, curve, movable) {
-        let along = (points[ray.vertex] - ray.anchor).dot(&ray.direction);
+        let q = ray.constrained(&points);
+        let along = (q - ray.anchor).dot(&ray.direction);
         let target = ray.anchor + ray.direction * along;
-        if along > 0.0 && (target - points[ray.vertex]).norm() <= max_move {
-            points[ray.vertex] = target;
+        // The vertex moves by as much as the constrained point.
+        if along > 0.0 && (target - q).norm() <= max_move {
+            ray.place(&mut points, target);
             moved[ray.vertex] = true;
         }
     }
@@ -323,9 +441,11 @@ pub(crate) fn corner_turns_kept<const D: usize>(
 
 /// The side check of [`Reduction::Refit`](crate::Reduction::Refit)'s span fit: whether the trial
 /// curve `next` (fitting points `trial`) has the tangents of the corners at the ends of the span
-/// between data indices `start` and `end` (the span's side of each) within half of
-/// [`FitOptions::corner_tolerance`] of the corner's, so that the two spans at a corner keep its
-/// turn within the bound. Always `true` when the option is `None`.
+/// between data indices `start` and `end` (the span's side of each) within their share of
+/// [`FitOptions::corner_tolerance`] ([`allowance`]: what the other side leaves where it is settled,
+/// as `settled` says by the corner's data index and side; else half), so that
+/// the two spans at a corner keep its turn within the bound. Always `true` when the option is
+/// `None`.
 pub(crate) fn span_sides_kept<const D: usize>(
     corners: &CornerTangents<D>,
     trial: &[(usize, bool)],
@@ -333,17 +453,24 @@ pub(crate) fn span_sides_kept<const D: usize>(
     options: &FitOptions,
     n: usize,
     (start, end): (usize, usize),
+    settled: impl Fn(usize, bool) -> bool,
 ) -> bool {
     let Some(bound) = options.corner_tolerance else {
         return true;
     };
+    let outside = |_: usize| false;
     corners.at(trial).all(|(j, c)| {
         if c.index != start % n && c.index != end % n {
             return true;
         }
         let d = deviation(next, j, c);
-        (c.index != start % n || d.outgoing <= 0.5 * bound)
-            && (c.index != end % n || d.incoming <= 0.5 * bound)
+        let share = |forwards: bool| {
+            let other = if forwards { d.incoming } else { d.outgoing };
+            let other_settled = side_settled(next, trial, j, !forwards, &outside, &settled);
+            allowance(bound, other, other_settled)
+        };
+        (c.index != start % n || d.outgoing <= share(true))
+            && (c.index != end % n || d.incoming <= share(false))
     })
 }
 

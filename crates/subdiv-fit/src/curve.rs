@@ -7,6 +7,8 @@ use crate::SubdivFitError;
 use crate::bspline::{
     bezier_to_bspline, bspline_basis, bspline_basis_d1, bspline_basis_d2, bspline_to_bezier,
 };
+use crate::curved_corner::{self, neighbour_control, span_end};
+
 use crate::tangent;
 use crate::vertex::VertexKind;
 
@@ -30,6 +32,8 @@ pub struct SubdivCurve<const D: usize> {
     closure: Closure,
     /// The tangent vertices, increasing (derived from `kinds`).
     tangents: Vec<usize>,
+    /// Whether a vertex is [`VertexKind::SharpCurved`] (derived from `kinds`).
+    curved: bool,
 }
 
 /// Whether a control polygon (and its limit curve) is open or closed.
@@ -102,7 +106,8 @@ impl<const D: usize> SubdivCurve<D> {
     /// Builds a curve from its control polygon and the kind of every vertex.
     ///
     /// An open polygon needs at least 2 vertices, a closed one at least 3.
-    /// The end vertices of an open polygon are made sharp.
+    /// The end vertices of an open polygon are made sharp ([`VertexKind::Sharp`] unless given as
+    /// [`VertexKind::SharpCurved`]).
     /// A [`VertexKind::Tangent`] vertex needs room for its double knot: no sharp vertex from two
     /// before it to three after it, no tangent neighbour, at least 6 vertices in a closed polygon
     /// and 3 before it and 4 after it in an open one.
@@ -134,16 +139,27 @@ impl<const D: usize> SubdivCurve<D> {
         }
         check_points(&points, MAX_COORDINATE)?;
         if !closed {
-            kinds[0] = VertexKind::Sharp;
             let last = kinds.len() - 1;
-            kinds[last] = VertexKind::Sharp;
+            for end in [0, last] {
+                if !kinds[end].is_sharp() {
+                    kinds[end] = VertexKind::Sharp;
+                }
+            }
         }
         let tangents = tangent::check_tangents(&kinds, closed)?;
+        let curved = kinds.contains(&VertexKind::SharpCurved);
+        if curved && let Some(&index) = tangents.first() {
+            return Err(SubdivFitError::InvalidTangent {
+                index,
+                reason: "tangent vertices and curved sharp vertices cannot share a polygon",
+            });
+        }
         Ok(Self {
             points,
             kinds,
             closure,
             tangents,
+            curved,
         })
     }
 
@@ -241,7 +257,11 @@ impl<const D: usize> SubdivCurve<D> {
                 kinds,
                 closure: self.closure,
                 tangents,
+                curved: false,
             };
+        }
+        if self.curved {
+            return self.refine_curved();
         }
         let n = self.points.len();
         let edges = self.edge_count();
@@ -269,6 +289,40 @@ impl<const D: usize> SubdivCurve<D> {
             kinds,
             closure: self.closure,
             tangents: Vec::new(),
+            curved: false,
+        }
+    }
+
+    /// [`SubdivCurve::refine`] with curved sharp vertices: the regular rules with the derived
+    /// control point `e₀` of a span end in place of the sharp vertex it stands for (module
+    /// `curved_corner`); sharp vertices stay.
+    fn refine_curved(&self) -> Self {
+        let n = self.points.len();
+        let edges = self.edge_count();
+        let mut points = Vec::with_capacity(n + edges);
+        let mut kinds = Vec::with_capacity(n + edges);
+        for i in 0..n {
+            let v = if self.kinds[i].is_sharp() {
+                self.points[i]
+            } else {
+                // A regular vertex has the edge after it (an open polygon's ends are sharp).
+                let [a, b, c, _] = self.uniform_controls(i);
+                (a + 6.0 * b + c) / 8.0
+            };
+            points.push(v);
+            kinds.push(self.kinds[i]);
+            if i < edges {
+                let [_, b, c, _] = self.uniform_controls(i);
+                points.push((b + c) * 0.5);
+                kinds.push(VertexKind::Regular);
+            }
+        }
+        Self {
+            points,
+            kinds,
+            closure: self.closure,
+            tangents: Vec::new(),
+            curved: true,
         }
     }
 
@@ -324,9 +378,49 @@ impl<const D: usize> SubdivCurve<D> {
         }
         Ok(if self.kinds[i].is_sharp() {
             self.points[i]
+        } else if self.curved {
+            // A regular vertex has the edge after it (an open polygon's ends are sharp).
+            let [a, b, c, _] = self.uniform_controls(i);
+            (a + 4.0 * b + c) / 6.0
         } else {
             (self.points[(i + n - 1) % n] + 4.0 * self.points[i] + self.points[(i + 1) % n]) / 6.0
         })
+    }
+
+    /// The limit curve's one-sided derivatives at the sharp vertex `i`: `C′` of the segment that
+    /// arrives there and of the one that leaves (`None` for a side beyond an open polygon's end).
+    /// At a [`VertexKind::Sharp`] vertex they are the polygon edges `p_i − p_{i−1}` and
+    /// `p_{i+1} − p_i`; at a [`VertexKind::SharpCurved`] one `(9 p_i + 2 p_{i∓2} − 11 p_{i∓1}) / 7`
+    /// and `(11 p_{i+1} − 2 p_{i+2} − 9 p_i) / 7` where the side is parabolic (module docs of
+    /// the crate). `None` when `i` is not a sharp vertex.
+    ///
+    /// ```
+    /// use subdiv_fit::{Closure, SubdivCurve, Vector2, VertexKind};
+    ///
+    /// let square = vec![
+    ///     Vector2::new(0.0, 0.0), Vector2::new(1.0, 0.0),
+    ///     Vector2::new(1.0, 1.0), Vector2::new(0.0, 1.0),
+    /// ];
+    /// let curve = SubdivCurve::with_sharp(square, &[0], Closure::Closed)?;
+    /// let (incoming, outgoing) = curve.corner_tangents(0).unwrap();
+    /// assert_eq!(incoming, Some(Vector2::new(0.0, -1.0)));
+    /// assert_eq!(outgoing, Some(Vector2::new(1.0, 0.0)));
+    /// # Ok::<(), subdiv_fit::SubdivFitError>(())
+    /// ```
+    #[must_use]
+    pub fn corner_tangents(&self, i: usize) -> Option<(Option<Vector<D>>, Option<Vector<D>>)> {
+        if !self.is_sharp(i) {
+            return None;
+        }
+        let n = self.points.len();
+        let closed = self.is_closed();
+        let side = |forwards| {
+            let exists = closed || if forwards { i + 1 < n } else { i > 0 };
+            exists.then(|| {
+                curved_corner::side_tangent(&self.kinds, &self.points, closed, i, forwards)
+            })
+        };
+        Some((side(false).map(|t| -t), side(true)))
     }
 
     /// The four uniform cubic B-spline control points of segment `i`.
@@ -334,6 +428,9 @@ impl<const D: usize> SubdivCurve<D> {
     /// This is the collapsed closed form of Sec. 2.2 (see the crate docs for the derivation):
     /// `(a, p_i, p_{i+1}, d)` with `a = p_{i-1}` if `p_i` is regular, else the phantom point
     /// `2 p_i − p_{i+1}`; and `d = p_{i+2}` if `p_{i+1}` is regular, else `2 p_{i+1} − p_i`.
+    /// Next to a [`VertexKind::SharpCurved`] vertex the corner's side takes the parabolic end
+    /// condition instead: `p_i` and the phantom point are replaced by the derived points of that
+    /// span end (module `curved_corner`), and so is a sharp `p_{i−1}`'s contribution.
     /// With two sharp ends the four points are equally spaced on a line and the segment is the
     /// line `(1 − u) p_i + u p_{i+1}` of eq. (2); with two regular ends it is eq. (1).
     /// A segment whose knots include the double knot of a tangent vertex is a cubic of the
@@ -360,6 +457,9 @@ impl<const D: usize> SubdivCurve<D> {
 
     /// The closed form on edge `i` with uniform knots around it.
     fn uniform_controls(&self, i: usize) -> [Vector<D>; 4] {
+        if self.curved {
+            return self.curved_controls(i);
+        }
         let n = self.points.len();
         let j = (i + 1) % n;
         let (b, c) = (self.points[i], self.points[j]);
@@ -372,6 +472,37 @@ impl<const D: usize> SubdivCurve<D> {
             2.0 * c - b
         } else {
             self.points[(j + 1) % n]
+        };
+        [a, b, c, d]
+    }
+
+    /// [`SubdivCurve::uniform_controls`] with curved sharp vertices: each sharp end replaced by
+    /// its span end's derived control and phantom points, a sharp vertex one further by its
+    /// derived control point.
+    fn curved_controls(&self, i: usize) -> [Vector<D>; 4] {
+        let n = self.points.len();
+        let closed = self.is_closed();
+        let j = (i + 1) % n;
+        let at = |w| curved_corner::point(&w, &self.points);
+        let (a, b) = if self.kinds[i].is_sharp() {
+            let end = span_end(&self.kinds, closed, i, true);
+            (at(end.phantom), at(end.control))
+        } else {
+            let prev = (i + n - 1) % n;
+            (
+                at(neighbour_control(&self.kinds, closed, prev, true)),
+                self.points[i],
+            )
+        };
+        let (c, d) = if self.kinds[j].is_sharp() {
+            let end = span_end(&self.kinds, closed, j, false);
+            (at(end.control), at(end.phantom))
+        } else {
+            let next = (j + 1) % n;
+            (
+                self.points[j],
+                at(neighbour_control(&self.kinds, closed, next, false)),
+            )
         };
         [a, b, c, d]
     }

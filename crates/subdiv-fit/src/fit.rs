@@ -13,6 +13,7 @@ use crate::corner_angles::{CornerTangents, corner_insertions, neighbours_on_tang
 use crate::corners::detect_corners;
 use crate::curvature::feature_points;
 use crate::curve::Closure;
+use crate::curved_corner::{Weights, neighbour_control, span_end};
 use crate::distance::PowerCubic;
 use crate::error::BestCurve;
 use crate::insertion::{insert_points, segment_range};
@@ -219,6 +220,18 @@ pub struct FitOptions {
     /// a value must lie in (0, 1].
     #[cfg_attr(feature = "serde", serde(default))]
     pub tangent_jump: Option<f64>,
+    /// The kind of the fit's sharp vertices: [`VertexKind::Sharp`] (the default, the paper's:
+    /// zero curvature on both sides of a corner) or [`VertexKind::SharpCurved`] (each side's first
+    /// segment a parabola, so a curved side leaves the corner with its curvature, at no extra
+    /// control point). Not with tangent joints ([`fit_with_joints`], [`FitOptions::tangent_jump`]).
+    #[cfg_attr(feature = "serde", serde(default = "sharp_kind"))]
+    pub corner_kind: VertexKind,
+}
+
+/// The default of [`FitOptions::corner_kind`] (for serde).
+#[cfg(feature = "serde")]
+fn sharp_kind() -> VertexKind {
+    VertexKind::Sharp
 }
 
 /// A threshold for [`FitOptions::tangent_jump`]: curvatures that differ by half the larger one.
@@ -243,6 +256,7 @@ impl FitOptions {
             reduction: Reduction::RemovePoints,
             corner_tolerance: None,
             tangent_jump: None,
+            corner_kind: VertexKind::Sharp,
         }
     }
 
@@ -349,6 +363,13 @@ impl FitOptions {
     #[must_use]
     pub fn with_tangent_jump(mut self, value: Option<f64>) -> Self {
         self.tangent_jump = value;
+        self
+    }
+
+    /// With `corner_kind` set to `value` (the kind of the fit's sharp vertices).
+    #[must_use]
+    pub fn with_corner_kind(mut self, value: VertexKind) -> Self {
+        self.corner_kind = value;
         self
     }
 
@@ -512,6 +533,20 @@ fn validate_options(o: &FitOptions) -> Result<(), SubdivFitError> {
             name: "tangent_jump",
             value,
             reason: "must lie in (0, 1]",
+        });
+    }
+    if !o.corner_kind.is_sharp() {
+        return Err(SubdivFitError::InvalidOption {
+            name: "corner_kind",
+            value: f64::NAN,
+            reason: "must be VertexKind::Sharp or VertexKind::SharpCurved",
+        });
+    }
+    if o.corner_kind == VertexKind::SharpCurved && o.tangent_jump.is_some() {
+        return Err(SubdivFitError::InvalidOption {
+            name: "tangent_jump",
+            value: o.tangent_jump.unwrap_or(f64::NAN),
+            reason: "cannot be combined with corner_kind = VertexKind::SharpCurved",
         });
     }
     for (name, value, ok, reason) in checks {
@@ -825,6 +860,13 @@ fn fit_checked<const D: usize>(
         return Err(SubdivFitError::CornerOutOfRange {
             index: c.index(),
             points: n,
+        });
+    }
+    if options.corner_kind == VertexKind::SharpCurved && !tangents.is_empty() {
+        return Err(SubdivFitError::InvalidOption {
+            name: "corner_kind",
+            value: f64::NAN,
+            reason: "VertexKind::SharpCurved cannot be combined with tangent joints",
         });
     }
     let indices: Vec<usize> = corners.iter().map(Corner::index).collect();
@@ -1185,12 +1227,40 @@ pub(crate) fn solve_curve<const D: usize>(
         sharp[0] = true;
         sharp[k - 1] = true;
     }
-    // Eq. (4) row by row: sharp p_i = q_i; regular (p_{i−1} + 4 p_i + p_{i+1}) / 6 = q_i.
+    let kinds: Vec<VertexKind> = sharp
+        .iter()
+        .map(|&s| {
+            if s {
+                options.corner_kind
+            } else {
+                VertexKind::Regular
+            }
+        })
+        .collect();
+    let curved = options.corner_kind == VertexKind::SharpCurved;
+    // Eq. (4) row by row: sharp p_i = q_i; regular (p_{i−1} + 4 p_i + p_{i+1}) / 6 = q_i, where
+    // next to a curved sharp vertex p_{i±1} is its span end's derived point (still on
+    // p_{i−1}, p_i, p_{i+1}).
     let (mut lower, mut diag, mut upper) = (vec![0.0; k], vec![0.0; k], vec![0.0; k]);
     let mut q = Vec::with_capacity(k);
     for (i, f) in fitting.iter().enumerate() {
         if sharp[i] {
             diag[i] = 1.0;
+        } else if curved {
+            let (prev, next) = ((i + k - 1) % k, (i + 1) % k);
+            diag[i] = 4.0 / 6.0;
+            for (m, forwards) in [(prev, true), (next, false)] {
+                for (v, w) in neighbour_control(&kinds, closed, m, forwards) {
+                    let slot = if v == i {
+                        &mut diag[i]
+                    } else if v == prev {
+                        &mut lower[i]
+                    } else {
+                        &mut upper[i]
+                    };
+                    *slot += w / 6.0;
+                }
+            }
         } else {
             lower[i] = 1.0 / 6.0;
             diag[i] = 4.0 / 6.0;
@@ -1201,16 +1271,6 @@ pub(crate) fn solve_curve<const D: usize>(
     let p = solve_tridiagonal(&lower, &diag, &upper, &q, closed)
         .ok_or(SubdivFitError::SingularSystem { size: k })?;
     let points: Vec<Vector<D>> = p.into_iter().map(Vector::<D>::from).collect();
-    let kinds = sharp
-        .iter()
-        .map(|&s| {
-            if s {
-                VertexKind::Sharp
-            } else {
-                VertexKind::Regular
-            }
-        })
-        .collect();
     let curve = SubdivCurve::new(points, kinds, Closure::from_closed(closed))?;
     match options.mode {
         FitMode::Interpolate => Ok(if options.corner_tolerance.is_some() {
@@ -1245,23 +1305,74 @@ pub(crate) fn solve_curve<const D: usize>(
     }
 }
 
-/// Coefficients of segment j's four B-spline control points on the polygon's vertices.
-pub(crate) fn segment_weights(kinds: &[VertexKind], j: usize, w: [f64; 4]) -> [(usize, f64); 6] {
+/// Segment j's four B-spline control points as combinations of the polygon's vertices (module
+/// `curved_corner` for the derived points at a sharp vertex). The paper's rule gives
+/// `a = 2 p_j − p_{j+1}` at a sharp `p_j`, else `p_{j−1}`, and likewise for `d`.
+pub(crate) fn segment_controls_weights(
+    kinds: &[VertexKind],
+    closed: bool,
+    j: usize,
+) -> [Weights; 4] {
     let k = kinds.len();
     let i1 = (j + 1) % k;
-    let prev = (j + k - 1) % k;
-    let next = (i1 + 1) % k;
-    let a: [(usize, f64); 2] = if kinds[j].is_sharp() {
-        [(j, 2.0 * w[0]), (i1, -w[0])]
+    let alone = |v: usize| [(v, 1.0), (v, 0.0), (v, 0.0)];
+    let (a, b) = if kinds[j].is_sharp() {
+        let end = span_end(kinds, closed, j, true);
+        (end.phantom, end.control)
     } else {
-        [(prev, w[0]), (j, 0.0)]
+        (
+            neighbour_control(kinds, closed, (j + k - 1) % k, true),
+            alone(j),
+        )
     };
-    let d: [(usize, f64); 2] = if kinds[i1].is_sharp() {
-        [(i1, 2.0 * w[3]), (j, -w[3])]
+    let (c, d) = if kinds[i1].is_sharp() {
+        let end = span_end(kinds, closed, i1, false);
+        (end.control, end.phantom)
     } else {
-        [(next, w[3]), (i1, 0.0)]
+        (
+            alone(i1),
+            neighbour_control(kinds, closed, (i1 + 1) % k, false),
+        )
     };
-    [a[0], a[1], (j, w[1]), (i1, w[2]), d[0], d[1]]
+    [a, b, c, d]
+}
+
+/// The row of one data point with basis weights `w` on the vertices: `(vertex, coefficient)`
+/// pairs of [`segment_controls_weights`] scaled by `w`, a vertex possibly more than once.
+pub(crate) fn segment_weights(
+    kinds: &[VertexKind],
+    closed: bool,
+    j: usize,
+    w: [f64; 4],
+) -> SegmentRow {
+    let mut row = SegmentRow::default();
+    for (control, scale) in segment_controls_weights(kinds, closed, j).iter().zip(w) {
+        for &(v, c) in control {
+            if c != 0.0 {
+                row.push(v, c * scale);
+            }
+        }
+    }
+    row
+}
+
+/// The coefficients of one data point's row on the vertices (see [`segment_weights`]).
+#[derive(Debug, Clone, Copy, Default)]
+pub(crate) struct SegmentRow {
+    entries: [(usize, f64); 12],
+    len: usize,
+}
+
+impl SegmentRow {
+    fn push(&mut self, vertex: usize, coefficient: f64) {
+        self.entries[self.len] = (vertex, coefficient);
+        self.len += 1;
+    }
+
+    /// The `(vertex, coefficient)` pairs.
+    pub(crate) fn iter(&self) -> impl Iterator<Item = (usize, f64)> + '_ {
+        self.entries[..self.len].iter().copied()
+    }
 }
 
 /// One least-squares solve: foot-point parameters from `curve`, then the regular control points
@@ -1304,10 +1415,10 @@ fn least_squares<const D: usize>(
         for (off, t0) in chord.iter().enumerate() {
             let v = data[(a + off) % n];
             let (t, _) = cubic.foot(&v, *t0);
-            let row = segment_weights(kinds, j, bspline_basis(t));
+            let row = segment_weights(kinds, curve.is_closed(), j, bspline_basis(t));
             let mut rhs = v;
             let mut coeffs: Vec<(usize, f64)> = Vec::with_capacity(6);
-            for (idx, w) in row {
+            for (idx, w) in row.iter() {
                 match unknown[idx] {
                     Some(col) => coeffs.push((col, w)),
                     None => rhs -= curve.points()[idx] * w,

@@ -6,7 +6,9 @@
 //! Journal of Image and Graphics 13(8), 2008, 1554–1559.
 //!
 //! Cubic B-spline subdivision curves whose vertices may be sharp or, beyond the paper, tangent
-//! (a double knot: G1 with a curvature jump) ([`SubdivCurve`], [`VertexKind`]),
+//! (a double knot: G1 with a curvature jump) or curved sharp (a corner whose sides keep their
+//! curvature: the first segment on each side is a parabola instead of starting straight)
+//! ([`SubdivCurve`], [`VertexKind`]),
 //! their refinement (Sec. 2.1), their exact evaluation at any parameter with first and second
 //! derivatives (Sec. 2.2), exact conversion of every segment to a cubic Bézier curve, and the
 //! adaptive fitting of such curves to ordered data points (Secs. 3–5, [`fit`]), with a per-round
@@ -19,6 +21,21 @@
 //! its neighbour across it were the phantom point `2 p_i − p_{i+1}`.
 //! [`SubdivCurve::segment_controls`] implements that; module `eigen` (feature `paper`) keeps the corrected eigen
 //! form, and the tests check that the two agree with each other and with repeated refinement.
+//! The phantom point gives the curve zero curvature at the corner on both sides; a
+//! [`VertexKind::SharpCurved`] vertex instead makes each side's first segment a parabola through
+//! the corner (the parabolic end condition, derived in module `curved_corner`), with the same
+//! control points.
+//!
+//! ## Which fit should I use
+//!
+//! | goal | options | on the printable ASCII of DejaVu Sans at 10⁻³ em |
+//! |---|---|---|
+//! | fastest | [`FitOptions::new`] | 1.48x TrueType's points |
+//! | fewest control points | `.with_reduction(Reduction::Refit).with_corner_kind(VertexKind::SharpCurved)` | 0.96x, corners' turns unchecked |
+//! | fewest points with every corner's turn within 1° of the outline's | the same `.with_corner_tolerance(Some(EXACT_CORNER_TOLERANCE))` with `fit_bez_path` (feature `kurbo`) or [`fit_with_known_corners`] | at most TrueType's count, about 1.5x the time |
+//! | the paper's configuration | [`FitOptions::paper`] | |
+//!
+//! (`docs/papers/subdiv-fit.md` in the repository has the measured table.)
 //!
 //! ```
 //! use subdiv_fit::{Closure, SubdivCurve, Vector2};
@@ -75,6 +92,7 @@ mod corner_angles;
 mod corners;
 mod curvature;
 mod curve;
+mod curved_corner;
 mod distance;
 #[cfg(feature = "paper")]
 pub mod eigen;

@@ -14,14 +14,19 @@
 //! `Σ_l (g_l)_c μ_l − λ_c t_c = p₀_c − X⁰_c` and `t_cᵀ μ_c = 0`. One band solve per constrained
 //! point more than the unconstrained solve, O(u) each; the constrained points are optimal along
 //! their rays together with all the others.
+//!
+//! At a curved corner (module `curved_corner`) the side's tangent follows a combination
+//! `X_c − κ X_w` of the neighbour and the free point beyond it; the constraint row `e_c` is then
+//! `a_c = e_c − κ e_w` throughout: `g_c = N⁻¹ a_c` and `a_cᵀ X` in place of `X_c`.
 
 use crate::banded::CyclicBand;
 
-/// A constraint of [`solve_on_rays`]: unknown `column` is `anchor + λ direction` (`direction` a
-/// unit vector).
+/// A constraint of [`solve_on_rays`]: unknown `column`, less `partner.1` times unknown
+/// `partner.0` if given, is `anchor + λ direction` (`direction` a unit vector).
 #[derive(Debug, Clone, Copy)]
 pub(crate) struct RayColumn<const D: usize> {
     pub(crate) column: usize,
+    pub(crate) partner: Option<(usize, f64)>,
     pub(crate) anchor: [f64; D],
     pub(crate) direction: [f64; D],
 }
@@ -39,15 +44,22 @@ pub(crate) fn solve_on_rays<const D: usize>(
         return Some((x, Vec::new()));
     }
     let u = b.len();
-    // g_c = N⁻¹ e_c.
+    // g_c = N⁻¹ a_c.
     let g: Vec<Vec<[f64; 1]>> = rays
         .iter()
         .map(|r| {
             let mut e = vec![[0.0]; u];
             e[r.column][0] = 1.0;
+            if let Some((w, k)) = r.partner {
+                e[w][0] -= k;
+            }
             n.solve(&e)
         })
         .collect::<Option<_>>()?;
+    // a_cᵀ v for a column vector v given by its rows.
+    let along = |ray: &RayColumn<D>, v: &dyn Fn(usize) -> f64| {
+        v(ray.column) - ray.partner.map_or(0.0, |(w, k)| k * v(w))
+    };
     // Unknowns: μ_l (D each) then λ_l; equations: D per ray, then one per ray.
     let r = rays.len();
     let size = r * (D + 1);
@@ -56,10 +68,10 @@ pub(crate) fn solve_on_rays<const D: usize>(
         for d in 0..D {
             let row = c * D + d;
             for (l, gl) in g.iter().enumerate() {
-                m[row][l * D + d] = gl[ray.column][0];
+                m[row][l * D + d] = along(ray, &|i| gl[i][0]);
             }
             m[row][r * D + c] = -ray.direction[d];
-            m[row][size] = ray.anchor[d] - x[ray.column][d];
+            m[row][size] = ray.anchor[d] - along(ray, &|i| x[i][d]);
             m[r * D + c][c * D + d] = ray.direction[d];
         }
     }
@@ -72,7 +84,12 @@ pub(crate) fn solve_on_rays<const D: usize>(
         }
     }
     let lambdas: Vec<f64> = (0..r).map(|c| z[r * D + c]).collect();
-    for (ray, &lambda) in rays.iter().zip(&lambdas) {
+    // On the rays to the last bit where the point is alone (a combination holds to rounding).
+    for (ray, &lambda) in rays
+        .iter()
+        .zip(&lambdas)
+        .filter(|(r, _)| r.partner.is_none())
+    {
         for ((xd, a), t) in x[ray.column].iter_mut().zip(ray.anchor).zip(ray.direction) {
             *xd = a + lambda * t;
         }
@@ -230,6 +247,7 @@ mod tests {
                 .take(if two { 2 } else { 1 })
                 .map(|&(column, a)| RayColumn {
                     column,
+                    partner: None,
                     anchor: [0.3 * a, -0.2],
                     direction: [a.cos(), a.sin()],
                 })
@@ -263,6 +281,54 @@ mod tests {
             prop_assert!(ours <= brute + 1e-9 * (1.0 + brute.abs()), "{ours} vs {brute}");
             for (l, b) in lambdas.iter().zip(&best) {
                 prop_assert!((l - b).abs() < 1e-5 * (1.0 + b.abs()), "{l} vs {b}");
+            }
+        }
+    }
+
+    proptest! {
+        #![proptest_config(ProptestConfig::with_cases(32))]
+        /// A ray on a combination `X_c − κ X_w` (a curved corner's side): the solution meets the
+        /// constraint and the optimality conditions of the convex problem (the gradient
+        /// `N X − B` vanishes in every other row, is `μ ⊥ t` in row c and `−κ μ` in row w), so it
+        /// is the constrained minimum.
+        #[test]
+        fn a_ray_on_a_combination_meets_the_optimality_conditions(
+            seed in 0u64..1_000_000,
+            u in 5usize..14,
+            angle in 0.0..std::f64::consts::TAU,
+            kappa in -0.5..0.5f64,
+        ) {
+            let (band, dense, rhs) = system(u, seed);
+            let ray = RayColumn {
+                column: 0,
+                partner: Some((1, kappa)),
+                anchor: [0.3, -0.2],
+                direction: [angle.cos(), angle.sin()],
+            };
+            let (x, lambdas) = solve_on_rays(&band, &rhs, &[ray]).unwrap();
+            let scale = rhs.iter().flatten().fold(1.0_f64, |m, v| m.max(v.abs()));
+            for ((&x0, &x1), (&a, &t)) in x[0].iter().zip(&x[1]).zip(ray.anchor.iter().zip(&ray.direction)) {
+                let (on, want) = (x0 - kappa * x1, a + lambdas[0] * t);
+                prop_assert!((on - want).abs() < 1e-9 * scale, "{on} vs {want}");
+            }
+            let grad: Vec<[f64; 2]> = (0..u)
+                .map(|i| {
+                    let mut g = [-rhs[i][0], -rhs[i][1]];
+                    for (j, xj) in x.iter().enumerate() {
+                        g[0] += dense[(i, j)] * xj[0];
+                        g[1] += dense[(i, j)] * xj[1];
+                    }
+                    g
+                })
+                .collect();
+            let tol = 1e-8 * scale;
+            for g in &grad[2..] {
+                prop_assert!(g[0].abs() < tol && g[1].abs() < tol, "{g:?}");
+            }
+            let mu = grad[0];
+            prop_assert!((mu[0] * ray.direction[0] + mu[1] * ray.direction[1]).abs() < tol);
+            for d in 0..2 {
+                prop_assert!((grad[1][d] + kappa * mu[d]).abs() < tol, "{:?} {mu:?}", grad[1]);
             }
         }
     }

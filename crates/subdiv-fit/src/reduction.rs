@@ -21,7 +21,7 @@ use crate::chord::ChordLengths;
 use crate::corner_angles::{CornerTangents, cone_rays, corner_turns_kept, span_sides_kept};
 use crate::fit::{FitMode, FitOptions, Reduction, solve_curve};
 use crate::insertion::segment_range;
-use crate::refit::refit;
+use crate::refit::{ITERATIONS, refit};
 use crate::vertex::VertexKind;
 
 /// `options` with interpolation (eq. (4)) as the mode: the start of [`Reduction::Refit`]'s
@@ -199,7 +199,7 @@ fn try_removal<const D: usize>(
             }
         }
         let guess = SubdivCurve::new(points, interp.kinds().to_vec(), curve.closure()).ok()?;
-        refit_near_corners(data, corners, &trial, guess, &free, options)?
+        refit_near_corners(data, corners, &trial, guess, &free, options, &|_, _| true)?
     } else {
         solve_curve(data, corners, &trial, closed, options).ok()?
     };
@@ -271,6 +271,9 @@ enum Spacing {
     /// a sharp vertex has zero curvature on both sides (its phantom point), so a span that leaves
     /// a corner curved has to gain its curvature within the first segments.
     Graded,
+    /// At equal steps of `∫ (κ + 1/ℓ)^(5/6) ds` ([`curvature_trial`]), for a span where the
+    /// chord-length spacings fail.
+    Curvature,
 }
 
 impl Spacing {
@@ -278,7 +281,7 @@ impl Spacing {
     fn fraction(self, m: usize, pieces: usize) -> f64 {
         let x = m as f64 / pieces as f64;
         match self {
-            Spacing::Even => x,
+            Spacing::Even | Spacing::Curvature => x,
             Spacing::Graded => 0.5 - 0.5 * (std::f64::consts::PI * x).cos(),
         }
     }
@@ -367,6 +370,65 @@ fn span_trial(
     trial
 }
 
+/// `fitting` with the points `inside` span `span` (unwrapped data indices of its ends) replaced by
+/// `count` regular points at equal steps of `∫ (κ + 1/ℓ)^(5/6) ds` over the span's data (`κ` the
+/// discrete curvature, turn over mean edge length; `ℓ` the span's length, so a straight span is
+/// spaced evenly). A cubic that follows an arc of curvature κ over a length L is off by about
+/// `L⁶ κ⁵`, so equal errors need a density of `κ^(5/6)`: the points gather where the outline bends
+/// tightly, as next to the joint of a 'Q''s tail.
+fn curvature_trial<const D: usize>(
+    data: &[Vector<D>],
+    fitting: &[(usize, bool)],
+    span: (usize, usize),
+    count: usize,
+    inside: impl Fn(usize) -> bool,
+) -> Vec<(usize, bool)> {
+    let (a, b) = span;
+    let n = data.len();
+    let at = |i: usize| data[i % n];
+    let mut trial: Vec<(usize, bool)> = fitting.iter().copied().filter(|f| !inside(f.0)).collect();
+    if b < a + 2 {
+        return trial;
+    }
+    let length: f64 = (a..b).map(|i| (at(i + 1) - at(i)).norm()).sum();
+    let floor = 1.0 / length.max(1e-300);
+    let mut cum = vec![0.0; b - a + 1];
+    for i in a + 1..=b {
+        let h = (at(i) - at(i - 1)).norm();
+        let kappa = if i < b {
+            let (u, v) = (at(i) - at(i - 1), at(i + 1) - at(i));
+            let hh = 0.5 * (h + v.norm());
+            let c = u.norm() * v.norm();
+            let turn = if c > 0.0 {
+                (u.dot(&v) / c).clamp(-1.0, 1.0).acos()
+            } else {
+                0.0
+            };
+            turn / hh.max(1e-300)
+        } else {
+            0.0
+        };
+        cum[i - a] = cum[i - 1 - a] + h * (kappa + floor).powf(5.0 / 6.0);
+    }
+    let total = cum[b - a];
+    let mut last = a;
+    for m in 1..=count {
+        let target = total * m as f64 / (count + 1) as f64;
+        // The data point whose measure is nearest the target.
+        let mut k = cum.partition_point(|&c| c < target);
+        if k > 0 && (k == cum.len() || target - cum[k - 1] < cum[k] - target) {
+            k -= 1;
+        }
+        let u = a + k.clamp(1, b - a - 1);
+        if u > last && u < b {
+            trial.push((u % n, false));
+            last = u;
+        }
+    }
+    trial.sort_unstable_by_key(|f| f.0);
+    trial
+}
+
 /// The spans between consecutive sharp fitting points as unwrapped data indices of their ends
 /// (a closed polygon without one is one span from its first fitting point round to it).
 fn spans(fitting: &[(usize, bool)], n: usize, closed: bool) -> Vec<(usize, usize)> {
@@ -416,55 +478,73 @@ pub(crate) fn fit_spans<const D: usize>(
     }
     let mut curve = solve_curve(data, corners, &fitting, closed, &interpolating(options)).ok()?;
     let mut measured = Vec::new();
+    // The corner sides (data index, after the corner) of the spans fitted so far: their tangents
+    // are final, so the next span's side at that corner may take what they leave of the bound.
+    let mut fitted_sides: Vec<(usize, bool)> = Vec::new();
     for span in spans(&fitting, n, closed) {
+        let settled = |index: usize, forwards: bool| fitted_sides.contains(&(index, forwards));
         let inside = |i: usize| strictly_inside(i, span, n);
         let seeded = fitting.iter().filter(|f| inside(f.0)).count();
+        // Whether the search has failed with the chord-length spacings and tries curvature.
+        let rescue = std::cell::Cell::new(false);
         // The first spacing with `count` points whose refit keeps the span within the tolerance:
         // its fitting points, curve and the errors of the span's segments.
         let attempt = |count: usize| {
-            [Spacing::Even, Spacing::Graded]
-                .into_iter()
-                .find_map(|spacing| {
-                    let trial = span_trial(&fitting, chords, span, count, spacing, inside);
-                    if trial.len() < if closed { 3 } else { 2 } {
+            let spacings: &[Spacing] = if rescue.get() {
+                &[Spacing::Curvature]
+            } else {
+                &[Spacing::Even, Spacing::Graded]
+            };
+            spacings.iter().find_map(|&spacing| {
+                let trial = match spacing {
+                    Spacing::Curvature => curvature_trial(data, &fitting, span, count, inside),
+                    _ => span_trial(&fitting, chords, span, count, spacing, inside),
+                };
+                if trial.len() < if closed { 3 } else { 2 } {
+                    return None;
+                }
+                let next = respaced_refit(
+                    data, corners, &trial, &fitting, &curve, options, inside, &settled,
+                )?;
+                if !span_sides_kept(corners, &trial, &next, options, n, span, settled) {
+                    return None;
+                }
+                let segs = next.segment_count();
+                let span_segments: Vec<usize> = (0..segs)
+                    .filter(|&s| {
+                        let start = trial[s].0;
+                        start == span.0 % n || inside(start)
+                    })
+                    .collect();
+                // A subsample of every segment first: most failing trials fail there.
+                if span_segments
+                    .iter()
+                    .any(|&s| subsample_exceeds(data, &trial, &next, s, tol))
+                {
+                    return None;
+                }
+                let mut errors = Vec::new();
+                for s in span_segments {
+                    let e = assess_segment(data, &trial, &next, closed, options, s, tol);
+                    if e.driven(options.measure) > tol {
                         return None;
                     }
-                    let next =
-                        respaced_refit(data, corners, &trial, &fitting, &curve, options, inside)?;
-                    if !span_sides_kept(corners, &trial, &next, options, n, span) {
-                        return None;
-                    }
-                    let segs = next.segment_count();
-                    let span_segments: Vec<usize> = (0..segs)
-                        .filter(|&s| {
-                            let start = trial[s].0;
-                            start == span.0 % n || inside(start)
-                        })
-                        .collect();
-                    // A subsample of every segment first: most failing trials fail there.
-                    if span_segments
-                        .iter()
-                        .any(|&s| subsample_exceeds(data, &trial, &next, s, tol))
-                    {
-                        return None;
-                    }
-                    let mut errors = Vec::new();
-                    for s in span_segments {
-                        let e = assess_segment(data, &trial, &next, closed, options, s, tol);
-                        if e.driven(options.measure) > tol {
-                            return None;
-                        }
-                        let range = segment_range(&trial, s, n);
-                        errors.push(Measured::new(range, next.segment_controls(s).ok()?, e));
-                    }
-                    Some((trial, next, errors))
-                })
+                    let range = segment_range(&trial, s, n);
+                    errors.push(Measured::new(range, next.segment_controls(s).ok()?, e));
+                }
+                Some((trial, next, errors))
+            })
         };
         let lowest = lowest_count(seeded);
         let mut count = lowest;
         let mut accepted = loop {
             if count > seeded + EXTRA_POINTS {
-                return None;
+                // Once more from the start with the points placed by curvature, before the
+                // insertion loop takes the whole curve over.
+                if rescue.replace(true) {
+                    return None;
+                }
+                count = lowest;
             }
             if let Some(found) = attempt(count) {
                 break found;
@@ -480,6 +560,7 @@ pub(crate) fn fit_spans<const D: usize>(
         let errors;
         (fitting, curve, errors) = accepted;
         measured.extend(errors);
+        fitted_sides.extend([(span.0 % n, true), (span.1 % n, false)]);
     }
     measured.sort_unstable_by_key(Measured::first);
     Some((fitting, curve, measured))
@@ -522,7 +603,16 @@ fn try_trial<const D: usize>(
     let tol = options.tolerance;
     let closed = curve.is_closed();
     let next = if options.reduction == Reduction::Refit {
-        respaced_refit(data, corners, trial, fitting, curve, options, inside)?
+        respaced_refit(
+            data,
+            corners,
+            trial,
+            fitting,
+            curve,
+            options,
+            inside,
+            &|_, _| true,
+        )?
     } else {
         solve_curve(data, corners, trial, closed, options).ok()?
     };
@@ -570,6 +660,10 @@ fn try_trial<const D: usize>(
 /// The curve of the fitting points `trial` for [`Reduction::Refit`]: the regular control points
 /// of the data indices `inside` the re-spaced span, from the interpolating solution, refitted by
 /// least squares; the others stay where `curve` (of `fitting`) has them.
+#[expect(
+    clippy::too_many_arguments,
+    reason = "the data with their corners, the trial, the current state, the span and its settled corner sides"
+)]
 fn respaced_refit<const D: usize>(
     data: &[Vector<D>],
     corners: &CornerTangents<D>,
@@ -578,6 +672,7 @@ fn respaced_refit<const D: usize>(
     curve: &SubdivCurve<D>,
     options: &FitOptions,
     inside: impl Fn(usize) -> bool,
+    settled: &impl Fn(usize, bool) -> bool,
 ) -> Option<SubdivCurve<D>> {
     let closed = curve.is_closed();
     let interp = solve_curve(data, corners, trial, closed, &interpolating(options)).ok()?;
@@ -596,14 +691,15 @@ fn respaced_refit<const D: usize>(
         free.rotate_left(cut);
     }
     let guess = SubdivCurve::new(points, interp.kinds().to_vec(), curve.closure()).ok()?;
-    refit_near_corners(data, corners, trial, guess, &free, options)
+    refit_near_corners(data, corners, trial, guess, &free, options, settled)
 }
 
 /// The refit of the control points `free` of `guess` (fitting points `trial`) for
 /// [`Reduction::Refit`]; with [`FitOptions::corner_tolerance`] set, a free neighbour of a corner
-/// whose polygon edge then leaves the corner's tangent by more than half the bound (a corner's
-/// turn is its polygon's turn, and each side has half of the bound) is constrained to the nearest
-/// edge of the cone within that angle and the points are refitted once more, each constrained one
+/// whose side then leaves the corner's tangent by more than its share of the bound (the turn's
+/// error is at most the sum of the sides'; a side takes what a settled other side leaves, else
+/// half, `settled` naming the settled sides outside `free`) is constrained to the nearest edge of
+/// the cone within that angle and the points are refitted once more, each constrained one
 /// optimal along its ray ([`cone_rays`]).
 fn refit_near_corners<const D: usize>(
     data: &[Vector<D>],
@@ -612,23 +708,29 @@ fn refit_near_corners<const D: usize>(
     guess: SubdivCurve<D>,
     free: &[usize],
     options: &FitOptions,
+    settled: &impl Fn(usize, bool) -> bool,
 ) -> Option<SubdivCurve<D>> {
-    let fitted = refit(data, trial, guess, free, &[])?;
     let Some(bound) = options.corner_tolerance else {
-        return Some(fitted);
+        return refit(data, trial, guess, free, &[], ITERATIONS, None);
     };
-    // Just inside half the bound, so that the side check passes despite rounding.
-    let slack = (0.5 * bound).min(1.5) * (1.0 - 1e-6);
-    let rays = cone_rays(corners, trial, &fitted, slack, |v| free.contains(&v));
-    if rays.is_empty() {
-        return Some(fitted);
-    }
-    refit(data, trial, fitted, free, &rays)
+    let cone = |fitted: &SubdivCurve<D>| {
+        cone_rays(
+            corners,
+            trial,
+            fitted,
+            bound,
+            |v| free.contains(&v),
+            settled,
+        )
+    };
+    // One iteration more than without the bound: the first solve that leaves a side's share
+    // fixes its ray, and the foot points follow the constrained curve once more.
+    refit(data, trial, guess, free, &[], ITERATIONS + 1, Some(&cone))
 }
 
 #[cfg(test)]
 mod tests {
-    use super::{Spacing, SpanIndex, fit_spans, lowest_count};
+    use super::{Spacing, SpanIndex, curvature_trial, fit_spans, lowest_count};
     use crate::assess::{assess, assess_reusing};
     use crate::chord::ChordLengths;
     use crate::corner_angles::CornerTangents;
@@ -714,6 +816,38 @@ mod tests {
             (reused.max_d2c, reused.rms_d2c, reused.max_c2d),
             (full.max_d2c, full.rms_d2c, full.max_c2d)
         );
+    }
+
+    /// The curvature spacing puts several of its points into a bend that is 4 % of the span's
+    /// length (chord-length spacing would put none of 8 there), and spaces a line evenly.
+    #[test]
+    fn curvature_spacing_gathers_points_in_a_tight_bend() {
+        // Two straight legs of 2 joined by a half circle of radius 0.05, samples every 0.01: the
+        // bend is 4 % of the length.
+        let mut data = Vec::new();
+        for i in 0..200 {
+            data.push(Vector2::new(f64::from(i) * 0.01, 0.0));
+        }
+        for i in 0..16 {
+            let a = std::f64::consts::PI * f64::from(i) / 16.0 - std::f64::consts::FRAC_PI_2;
+            data.push(Vector2::new(2.0 + 0.05 * a.cos(), 0.05 + 0.05 * a.sin()));
+        }
+        for i in 0..=200 {
+            data.push(Vector2::new(2.0 - f64::from(i) * 0.01, 0.1));
+        }
+        let n = data.len();
+        let fitting = [(0, true), (n - 1, true)];
+        let inside = |i: usize| i > 0 && i < n - 1;
+        let trial = curvature_trial(&data, &fitting, (0, n - 1), 8, inside);
+        assert_eq!(trial.len(), 10);
+        let in_bend = trial.iter().filter(|f| (200..216).contains(&f.0)).count();
+        assert!(in_bend >= 2, "{trial:?}");
+        // A straight span is spaced evenly.
+        let line: Vec<Vector2> = (0..=100).map(|i| Vector2::new(f64::from(i), 0.0)).collect();
+        let fitting = [(0, true), (100, true)];
+        let trial = curvature_trial(&line, &fitting, (0, 100), 4, |i| i > 0 && i < 100);
+        let got: Vec<usize> = trial.iter().map(|f| f.0).collect();
+        assert_eq!(got, [0, 20, 40, 60, 80, 100]);
     }
 
     /// Even fractions are `m / p`; graded ones are increasing, symmetric about the middle, and

@@ -17,7 +17,7 @@ use crate::banded::CyclicBand;
 use crate::bspline::bspline_basis;
 use crate::corner_angles::Ray;
 use crate::distance::PowerCubic;
-use crate::fit::segment_weights;
+use crate::fit::segment_controls_weights;
 use crate::insertion::segment_range;
 use crate::on_rays::{RayColumn, solve_on_rays};
 
@@ -30,6 +30,10 @@ pub(crate) const SAMPLES_PER_SEGMENT: usize = 16;
 /// the last iteration sets the result (on the glyph set at 10⁻³ em 1,794 control points instead of
 /// 1,795 with 16 in both, 7 % fewer instructions in all).
 pub(crate) const FIRST_SAMPLES: usize = 8;
+
+/// The rays for the corner sides of a refitted curve that leave their share of the corner bound
+/// ([`cone_rays`](crate::corner_angles::cone_rays)).
+pub(crate) type Cone<'a, const D: usize> = &'a dyn Fn(&SubdivCurve<D>) -> Vec<Ray<D>>;
 
 /// Iterations of foot points and solve per refit.
 pub(crate) const ITERATIONS: usize = 2;
@@ -58,7 +62,9 @@ pub(crate) fn shaped_segments<const D: usize>(
 
 /// `guess` with its control points `free` (regular vertices, in polygon order, consecutive ones at
 /// most 3 apart or wrapping round a closed polygon) refitted by least squares to the data of the
-/// segments they shape ([`ITERATIONS`] times), the other control points fixed. `None` when the
+/// segments they shape (`iterations` times), the other control points fixed. With `cone`, each
+/// solve without rays is followed by `cone`'s rays for its result, if any: the same normal
+/// equations are then solved with them, and the iterations after it keep them. `None` when the
 /// system is singular (a free point without data) or the result not finite. The free control
 /// points of `rays` are constrained to them (one unknown each along its ray, solved with the
 /// others: [`solve_on_rays`]); `None` also when a ray's vertex is not free.
@@ -68,6 +74,8 @@ pub(crate) fn refit<const D: usize>(
     guess: SubdivCurve<D>,
     free: &[usize],
     rays: &[Ray<D>],
+    iterations: usize,
+    cone: Option<Cone<'_, D>>,
 ) -> Option<SubdivCurve<D>> {
     let n = data.len();
     let k = guess.points().len();
@@ -83,8 +91,10 @@ pub(crate) fn refit<const D: usize>(
         return Some(guess);
     }
     let segments = shaped_segments(&guess, free);
+    let closed = guess.is_closed();
     let mut curve = guess;
-    for iteration in 0..ITERATIONS {
+    let mut active = rays.to_vec();
+    for iteration in 0..iterations {
         let sharp = curve.kinds();
         let mut ata = CyclicBand::zeros(u);
         let mut atb = vec![[0.0; D]; u];
@@ -93,7 +103,7 @@ pub(crate) fn refit<const D: usize>(
             let ctrl = curve.segment_controls(s).ok()?;
             let cubic = PowerCubic::new(&ctrl);
             let last = b - a;
-            let samples = if iteration + 1 < ITERATIONS {
+            let samples = if iteration + 1 < iterations {
                 FIRST_SAMPLES
             } else {
                 SAMPLES_PER_SEGMENT
@@ -140,13 +150,15 @@ pub(crate) fn refit<const D: usize>(
             }
             // Control point r = Σ coefficient · vertex (phantom points at sharp ends): its free
             // part by column, its fixed part as a point.
-            let mut parts = [[(0, 0.0); 2]; 4];
+            // At most three vertices each (module `curved_corner`).
+            let mut parts = [[(0, 0.0); 3]; 4];
             let mut counts = [0; 4];
             let mut fixed = [[0.0; D]; 4];
-            for r in 0..4 {
-                let mut unit = [0.0; 4];
-                unit[r] = 1.0;
-                for (idx, coef) in segment_weights(sharp, s, unit) {
+            for (r, control) in segment_controls_weights(sharp, closed, s)
+                .iter()
+                .enumerate()
+            {
+                for &(idx, coef) in control {
                     if coef == 0.0 {
                         continue;
                     }
@@ -186,29 +198,53 @@ pub(crate) fn refit<const D: usize>(
                 }
             }
         }
-        let on_rays: Vec<RayColumn<D>> = rays
-            .iter()
-            .map(|r| {
-                Some(RayColumn {
-                    column: column[r.vertex]?,
-                    anchor: r.anchor.into(),
-                    direction: r.direction.into(),
+        let solve = |rays: &[Ray<D>]| -> Option<SubdivCurve<D>> {
+            // A partner that is not free is part of the anchor.
+            let on_rays: Vec<RayColumn<D>> = rays
+                .iter()
+                .map(|r| {
+                    let (partner, anchor) = match r.partner {
+                        Some((w, k)) => match column[w] {
+                            Some(col) => (Some((col, k)), r.anchor),
+                            None => (None, r.anchor + curve.points()[w] * k),
+                        },
+                        None => (None, r.anchor),
+                    };
+                    Some(RayColumn {
+                        column: column[r.vertex]?,
+                        partner,
+                        anchor: anchor.into(),
+                        direction: r.direction.into(),
+                    })
                 })
-            })
-            .collect::<Option<_>>()?;
-        let (sol, _) = solve_on_rays(&ata, &atb, &on_rays)?;
-        let mut points = curve.points().to_vec();
-        for (&v, p) in free.iter().zip(&sol) {
-            points[v] = Vector::<D>::from(*p);
+                .collect::<Option<_>>()?;
+            let (sol, _) = solve_on_rays(&ata, &atb, &on_rays)?;
+            let mut points = curve.points().to_vec();
+            for (&v, p) in free.iter().zip(&sol) {
+                points[v] = Vector::<D>::from(*p);
+            }
+            SubdivCurve::new(points, sharp.to_vec(), curve.closure()).ok()
+        };
+        let mut next = solve(&active)?;
+        if active.is_empty()
+            && let Some(cone) = cone
+        {
+            // The cone's rays from this solve, on the same normal equations, and kept for the
+            // iterations after it.
+            let late = cone(&next);
+            if !late.is_empty() {
+                next = solve(&late)?;
+                active = late;
+            }
         }
-        curve = SubdivCurve::new(points, sharp.to_vec(), curve.closure()).ok()?;
+        curve = next;
     }
     Some(curve)
 }
 
 #[cfg(test)]
 mod tests {
-    use super::{refit, shaped_segments};
+    use super::{ITERATIONS, refit, shaped_segments};
     use crate::{Closure, SubdivCurve, Vector2};
 
     /// An open polygon with a sharp vertex in the middle, its limit curve sampled at 40 points
@@ -269,7 +305,7 @@ mod tests {
     fn refit_recovers_the_control_points_of_exact_data() {
         let (curve, data, fitting) = truth();
         let free = [2, 3, 5];
-        let same = refit(&data, &fitting, curve.clone(), &free, &[]).unwrap();
+        let same = refit(&data, &fitting, curve.clone(), &free, &[], ITERATIONS, None).unwrap();
         for v in 0..curve.points().len() {
             assert!((same.points()[v] - curve.points()[v]).norm() < 1e-9, "{v}");
         }
@@ -280,7 +316,7 @@ mod tests {
         let guess = SubdivCurve::new(points, curve.kinds().to_vec(), Closure::Open).unwrap();
         let shaped = shaped_segments(&guess, &free);
         assert_eq!(shaped, [0, 1, 2, 3, 4, 5, 6]);
-        let fitted = refit(&data, &fitting, guess.clone(), &free, &[]).unwrap();
+        let fitted = refit(&data, &fitting, guess.clone(), &free, &[], ITERATIONS, None).unwrap();
         let (before, after) = (
             max_distance(&guess, &data, &fitting),
             max_distance(&fitted, &data, &fitting),
@@ -299,9 +335,9 @@ mod tests {
     #[test]
     fn refit_rejects_sharp_points_and_keeps_the_guess_without_free_points() {
         let (curve, data, fitting) = truth();
-        assert!(refit(&data, &fitting, curve.clone(), &[4], &[]).is_none());
+        assert!(refit(&data, &fitting, curve.clone(), &[4], &[], ITERATIONS, None).is_none());
         assert_eq!(
-            refit(&data, &fitting, curve.clone(), &[], &[]).unwrap(),
+            refit(&data, &fitting, curve.clone(), &[], &[], ITERATIONS, None).unwrap(),
             curve
         );
     }

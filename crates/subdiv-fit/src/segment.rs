@@ -48,8 +48,9 @@ impl<const D: usize> Segment<D> {
         self.index
     }
 
-    /// The four uniform cubic B-spline control points (phantom points at sharp vertices; next to
-    /// a tangent vertex the uniform form of the segment's cubic).
+    /// The four uniform cubic B-spline control points (phantom points at sharp vertices, the
+    /// derived points of the parabolic end next to a curved sharp vertex; next to a tangent
+    /// vertex the uniform form of the segment's cubic).
     #[must_use]
     pub fn controls(&self) -> &[Vector<D>; 4] {
         &self.controls

@@ -30,12 +30,19 @@ pub enum VertexKind {
     /// Refinement next to it inserts knots (Boehm); evaluation is exact (de Boor), and so is the
     /// Bézier form. Sharp vertices must stay three vertices away (see [`crate::SubdivCurve::new`]).
     Tangent,
+    /// A sharp vertex whose sides keep their curvature: interpolated like [`VertexKind::Sharp`],
+    /// with the one-sided tangents free of the polygon edges, and the first segment on each side
+    /// that has a regular vertex a parabola (the parabolic end condition instead of the phantom
+    /// point's zero curvature; see the crate docs). Where a side has no regular vertex before the
+    /// next sharp vertex, that edge is the straight segment, as for [`VertexKind::Sharp`]. Not
+    /// allowed in a polygon with [`VertexKind::Tangent`] vertices.
+    SharpCurved,
 }
 
 impl VertexKind {
-    /// `true` for [`VertexKind::Sharp`].
+    /// `true` for the corners, [`VertexKind::Sharp`] and [`VertexKind::SharpCurved`].
     #[must_use]
     pub fn is_sharp(self) -> bool {
-        self == Self::Sharp
+        matches!(self, Self::Sharp | Self::SharpCurved)
     }
 }

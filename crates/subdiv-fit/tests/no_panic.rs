@@ -104,10 +104,24 @@ fn options() -> impl Strategy<Value = FitOptions> {
                 wild().prop_map(Some)
             ],
             prop_oneof![Just(None), Just(Some(TANGENT_JUMP)), wild().prop_map(Some)],
+            // The sharp kinds and one that is not (refused).
+            prop_oneof![
+                Just(VertexKind::Sharp),
+                Just(VertexKind::SharpCurved),
+                Just(VertexKind::Regular)
+            ],
         ),
     )
         .prop_map(
-            |((tol, angle), scale, (floor, prominence), rounds, samples, flags, (corner, jump))| {
+            |(
+                (tol, angle),
+                scale,
+                (floor, prominence),
+                rounds,
+                samples,
+                flags,
+                (corner, jump, kind),
+            )| {
                 let tol = if tol.is_finite() {
                     tol.abs().max(1e-12)
                 } else {
@@ -148,6 +162,7 @@ fn options() -> impl Strategy<Value = FitOptions> {
                     })
                     .with_corner_tolerance(corner)
                     .with_tangent_jump(jump)
+                    .with_corner_kind(kind)
             },
         )
 }

@@ -3,8 +3,9 @@
 
 use subdiv_fit::{
     CORNER_TOLERANCE, Closure, Corner, EXACT_CORNER_TOLERANCE, FitMode, FitOptions,
-    MAX_SAMPLES_PER_SEGMENT, Reduction, SubdivFitError, TANGENT_JUMP, Vector2, fit,
-    fit_with_corners, fit_with_known_corners, point_polyline_distance, scaled_corners,
+    MAX_SAMPLES_PER_SEGMENT, Reduction, SubdivCurve, SubdivFitError, TANGENT_JUMP, Vector2,
+    VertexKind, fit, fit_with_corners, fit_with_known_corners, point_polyline_distance,
+    scaled_corners,
 };
 
 /// A deterministic uniform generator in [-1, 1].
@@ -236,13 +237,27 @@ fn point_removal_keeps_the_tolerance() {
 
 /// The turn of the control polygon at vertex `j` (the turn of the limit curve at a sharp vertex),
 /// in degrees.
-fn polygon_turn(p: &[Vector2], j: usize) -> f64 {
-    let k = p.len();
-    let (inc, out) = (p[j] - p[(j + k - 1) % k], p[(j + 1) % k] - p[j]);
-    (inc.x() * out.y() - inc.y() * out.x())
+/// The limit curve's turn (degrees) at its sharp vertex `j`, from its one-sided tangents (the
+/// polygon edges at a `VertexKind::Sharp` vertex, the closed forms at a `SharpCurved` one);
+/// checked here against the polygon turn where the two agree.
+fn curve_turn(curve: &SubdivCurve<2>, j: usize) -> f64 {
+    let (inc, out) = curve.corner_tangents(j).unwrap();
+    let (inc, out) = (inc.unwrap(), out.unwrap());
+    let turn = (inc.x() * out.y() - inc.y() * out.x())
         .atan2(inc.dot(&out))
         .to_degrees()
-        .abs()
+        .abs();
+    if curve.kinds()[j] == VertexKind::Sharp {
+        let p = curve.points();
+        let k = p.len();
+        let (a, b) = (p[j] - p[(j + k - 1) % k], p[(j + 1) % k] - p[j]);
+        let polygon = (a.x() * b.y() - a.y() * b.x())
+            .atan2(a.dot(&b))
+            .to_degrees()
+            .abs();
+        assert!((polygon - turn).abs() < 1e-9);
+    }
+    turn
 }
 
 /// The largest error of the corners' turns against the outline's exact turns: 120° (concave arc
@@ -254,7 +269,7 @@ fn corner_error(f: &subdiv_fit::Fit<2>, corners: &[usize]) -> f64 {
         .map(|(&c, exact)| {
             let j = f.fitting.iter().position(|&i| i == c).unwrap();
             assert!(f.curve.is_sharp(j));
-            (polygon_turn(f.curve.points(), j) - exact).abs()
+            (curve_turn(&f.curve, j) - exact).abs()
         })
         .fold(0.0, f64::max)
 }
@@ -286,11 +301,19 @@ fn kept_corners_keep_their_angle() {
                     .with_mode(mode)
                     .with_reduction(reduction)
                     .with_corner_tolerance(Some(CORNER_TOLERANCE));
-                let f = fit(&data, Closure::Closed, &opts).unwrap();
-                let error = corner_error(&f, &corners);
-                assert!(error < 1.0, "{n} {mode:?} {reduction:?}: {error}°");
-                let r = f.last().unwrap();
-                assert!(r.max_data_to_curve <= 1e-3 && r.max_curve_to_data <= 1e-3);
+                // Curved corners at the smaller sizes (the suite's time).
+                let kinds: &[VertexKind] = if n <= 10_000 {
+                    &[VertexKind::Sharp, VertexKind::SharpCurved]
+                } else {
+                    &[VertexKind::Sharp]
+                };
+                for &kind in kinds {
+                    let f = fit(&data, Closure::Closed, &opts.with_corner_kind(kind)).unwrap();
+                    let error = corner_error(&f, &corners);
+                    assert!(error < 1.0, "{n} {mode:?} {reduction:?} {kind:?}: {error}°");
+                    let r = f.last().unwrap();
+                    assert!(r.max_data_to_curve <= 1e-3 && r.max_curve_to_data <= 1e-3);
+                }
             }
         }
     }
@@ -375,7 +398,7 @@ fn refit_keeps_the_exact_turns_of_a_stem_and_a_bowl() {
         for (c, exact) in corners.iter().zip(exact) {
             let j = f.fitting.iter().position(|&i| i == *c).unwrap();
             assert!(f.curve.is_sharp(j));
-            let error = (polygon_turn(f.curve.points(), j) - exact).abs();
+            let error = (curve_turn(&f.curve, j) - exact).abs();
             assert!(error < 1.0, "{b1:?} {b2:?} corner {c}: {error}°");
         }
         let r = f.last().unwrap();
@@ -385,8 +408,9 @@ fn refit_keeps_the_exact_turns_of_a_stem_and_a_bowl() {
 
 /// With the corners' exact tangents given (`Corner::with_tangents`, the stem's direction and the
 /// cubic's end tangents), `Reduction::Refit` with `EXACT_CORNER_TOLERANCE` keeps every corner of
-/// the stem-and-bowl outlines within that bound (0.9°) of its exact turn, within the tolerance;
-/// the other reductions bound the same tangents within 1°.
+/// the stem-and-bowl outlines within that bound (0.9°) of its exact turn, within the tolerance,
+/// with either sharp kind (at `VertexKind::SharpCurved` the turn of the curve's closed-form
+/// tangents, not of the polygon); the other reductions bound the same tangents within 1°.
 #[test]
 fn exact_tangents_keep_the_turns_within_the_bound() {
     let base = FitOptions::new(1e-3).with_corner_tolerance(Some(EXACT_CORNER_TOLERANCE));
@@ -403,20 +427,29 @@ fn exact_tangents_keep_the_turns_within_the_bound() {
             Corner::with_tangents(corners[0], Vector2::new(0.0, 0.0) - b2, up).unwrap(),
             Corner::with_tangents(corners[1], up, b1 - up).unwrap(),
         ];
-        for (reduction, bound) in [
-            (Reduction::Refit, EXACT_CORNER_TOLERANCE.to_degrees() + 1e-9),
-            (Reduction::RemovePoints, 1.0),
-            (Reduction::RespaceAndRemove, 1.0),
+        for (reduction, bound, kind) in [
+            (
+                Reduction::Refit,
+                EXACT_CORNER_TOLERANCE.to_degrees() + 1e-9,
+                VertexKind::Sharp,
+            ),
+            (
+                Reduction::Refit,
+                EXACT_CORNER_TOLERANCE.to_degrees() + 1e-9,
+                VertexKind::SharpCurved,
+            ),
+            (Reduction::RemovePoints, 1.0, VertexKind::Sharp),
+            (Reduction::RespaceAndRemove, 1.0, VertexKind::Sharp),
         ] {
-            let opts = base.with_reduction(reduction);
+            let opts = base.with_reduction(reduction).with_corner_kind(kind);
             let f = fit_with_known_corners(&data, Closure::Closed, &known, &opts).unwrap();
             for (c, exact) in corners.iter().zip(exact) {
                 let j = f.fitting.iter().position(|&i| i == *c).unwrap();
-                assert!(f.curve.is_sharp(j));
-                let error = (polygon_turn(f.curve.points(), j) - exact).abs();
+                assert_eq!(f.curve.kinds()[j], kind);
+                let error = (curve_turn(&f.curve, j) - exact).abs();
                 assert!(
                     error <= bound,
-                    "{b1:?} {b2:?} {reduction:?} corner {c}: {error}°"
+                    "{b1:?} {b2:?} {reduction:?} {kind:?} corner {c}: {error}°"
                 );
             }
             let r = f.last().unwrap();
@@ -449,27 +482,30 @@ fn fit_bez_path_keeps_the_paths_corner_turns() {
         })
         .collect();
     let tol = 1e-3;
-    let opts = FitOptions::new(tol)
-        .with_reduction(Reduction::Refit)
-        .with_corner_tolerance(Some(EXACT_CORNER_TOLERANCE));
-    let (_, fits) = subdiv_fit::fit_bez_path(&path, &opts).unwrap();
-    assert_eq!(fits.len(), 1);
-    let f = &fits[0];
-    let r = f.last().unwrap();
-    assert!(
-        r.max_data_to_curve <= tol && r.max_curve_to_data <= tol,
-        "{r:?}"
-    );
-    let p = f.curve.points();
-    for (at, exact) in joints {
-        let j = (0..p.len())
-            .find(|&j| f.curve.is_sharp(j) && (p[j].x() - at.x).hypot(p[j].y() - at.y) < 1e-12)
-            .unwrap();
-        let error = (polygon_turn(p, j) - exact).abs();
+    for kind in [VertexKind::Sharp, VertexKind::SharpCurved] {
+        let opts = FitOptions::new(tol)
+            .with_reduction(Reduction::Refit)
+            .with_corner_tolerance(Some(EXACT_CORNER_TOLERANCE))
+            .with_corner_kind(kind);
+        let (_, fits) = subdiv_fit::fit_bez_path(&path, &opts).unwrap();
+        assert_eq!(fits.len(), 1);
+        let f = &fits[0];
+        let r = f.last().unwrap();
         assert!(
-            error <= EXACT_CORNER_TOLERANCE.to_degrees() + 1e-9,
-            "{at:?}: {error}°"
+            r.max_data_to_curve <= tol && r.max_curve_to_data <= tol,
+            "{r:?}"
         );
+        let p = f.curve.points();
+        for &(at, exact) in &joints {
+            let j = (0..p.len())
+                .find(|&j| f.curve.is_sharp(j) && (p[j].x() - at.x).hypot(p[j].y() - at.y) < 1e-12)
+                .unwrap();
+            let error = (curve_turn(&f.curve, j) - exact).abs();
+            assert!(
+                error <= EXACT_CORNER_TOLERANCE.to_degrees() + 1e-9,
+                "{kind:?} {at:?}: {error}°"
+            );
+        }
     }
 }
 

@@ -13,7 +13,9 @@ use kurbo::{
     Affine, BezPath, ParamCurve, ParamCurveArclen, ParamCurveNearest, PathEl, PathSeg, Point, Vec2,
 };
 use serde_json::{Value, json};
-use subdiv_fit::{EXACT_CORNER_TOLERANCE, FitMode, FitOptions, Reduction, Vector2, fit_bez_path};
+use subdiv_fit::{
+    EXACT_CORNER_TOLERANCE, FitMode, FitOptions, Reduction, VertexKind, fit_bez_path,
+};
 
 use crate::DynError;
 use crate::tables::Table;
@@ -155,10 +157,12 @@ fn joints(outline: &BezPath) -> Vec<(Point, f64)> {
     out
 }
 
-/// The turn of a control polygon at vertex `j`, in degrees (closed polygons wrap round).
-fn polygon_turn(p: &[Vector2], j: usize) -> f64 {
-    let k = p.len();
-    let (a, b) = (p[j] - p[(j + k - 1) % k], p[(j + 1) % k] - p[j]);
+/// The turn of the fitted curve at its sharp vertex `j`, in degrees: between its one-sided tangents
+/// (the polygon edges at a `VertexKind::Sharp` vertex).
+fn curve_turn(curve: &subdiv_fit::SubdivCurve<2>, j: usize) -> f64 {
+    let Some((Some(a), Some(b))) = curve.corner_tangents(j) else {
+        return 0.0;
+    };
     angle(Vec2::new(a.x(), a.y()), Vec2::new(b.x(), b.y()))
 }
 
@@ -186,8 +190,8 @@ fn kurbo_all(glyphs: &[Glyph], tol: f64) {
 
 /// The subdiv-fit configurations of the table at `tol`: interpolation and least squares, each
 /// with the default point removal and with re-spacing first, and the least-squares refit of the
-/// spans (`Reduction::Refit`).
-fn configurations(tol: f64) -> [(&'static str, FitOptions); 6] {
+/// spans (`Reduction::Refit`), with either sharp kind, with and without the corner bound.
+fn configurations(tol: f64) -> [(&'static str, FitOptions); 8] {
     let interp = FitOptions::new(tol);
     let lsq = interp.with_mode(FitMode::LeastSquares);
     let respace = Reduction::RespaceAndRemove;
@@ -210,6 +214,19 @@ fn configurations(tol: f64) -> [(&'static str, FitOptions); 6] {
             "subdiv-fit, least-squares refit of the spans, corner bound 0.9° (exact tangents)",
             interp
                 .with_reduction(Reduction::Refit)
+                .with_corner_tolerance(Some(EXACT_CORNER_TOLERANCE)),
+        ),
+        (
+            "subdiv-fit, least-squares refit of the spans, curved corners",
+            interp
+                .with_reduction(Reduction::Refit)
+                .with_corner_kind(VertexKind::SharpCurved),
+        ),
+        (
+            "subdiv-fit, least-squares refit of the spans, curved corners, corner bound 0.9° (exact tangents)",
+            interp
+                .with_reduction(Reduction::Refit)
+                .with_corner_kind(VertexKind::SharpCurved)
                 .with_corner_tolerance(Some(EXACT_CORNER_TOLERANCE)),
         ),
     ]
@@ -257,9 +274,7 @@ fn subdiv_fit_totals(glyphs: &[Glyph], tol: f64, opts: &FitOptions) -> Result<To
                     && (p - at).hypot() < 1e-9
                     && turn >= BOUNDED_TURN
                 {
-                    t.turn_error = t
-                        .turn_error
-                        .max((polygon_turn(f.curve.points(), j) - turn).abs());
+                    t.turn_error = t.turn_error.max((curve_turn(&f.curve, j) - turn).abs());
                 }
             }
             t.points += f.curve.points().len();
@@ -311,7 +326,7 @@ pub(crate) fn table() -> Result<Table, DynError> {
          {} glyphs (U+{first:04X}..), fitted contour by contour with `fit_bez_path` (samples about every tolerance, the outline's corners given as known corners, two-sided error, default options otherwise).\n\
          TrueType: the points the font's glyph table stores ({truetype}, on- and off-curve, implied points not counted). kurbo: `simplify_bezpath` on the true outline at accuracy = tolerance, counting 3 points per cubic, 2 per quadratic, 1 per line.\n\
          Max error: the two-sided distance to the true outline (without the one-point contour of 'u') (16 samples per segment each way, nearest points on the other side), largest over the glyphs; glyphs over: glyphs whose error exceeds the tolerance.\n\
-         Corners: joints of the outline where the tangent turns by more than 1°, and how many are sharp vertices of the fit; extra sharp: sharp vertices the fit added (corners at the feature scale); max corner turn error: the largest difference between the fit's turn at a kept corner that turns by at least {BOUNDED_TURN}° (its control polygon's turn) and the outline's.\n\
+         Corners: joints of the outline where the tangent turns by more than 1°, and how many are sharp vertices of the fit; extra sharp: sharp vertices the fit added (corners at the feature scale); max corner turn error: the largest difference between the fit's turn at a kept corner that turns by at least {BOUNDED_TURN}° (the turn between the curve's one-sided tangents there: its control polygon's turn at a `VertexKind::Sharp` corner) and the outline's.\n\
          Time per glyph (not checked): {{clock}} per glyph of fitting all glyphs, the methods interleaved in one release-mode run, the fastest of {ROUNDS} rounds (on the machine that ran `cargo xtask tables`); time ratio: to kurbo's at the same tolerance.\n\n\
          | tolerance (em) | method | control points | ratio to TrueType | max error (em) | glyphs over | corners kept sharp | extra sharp | max corner turn error (°) | time per glyph (ms) | time ratio to kurbo |\n\
          |---|---|---|---|---|---|---|---|---|---|---|\n",

@@ -34,6 +34,10 @@ pub struct SampledContour {
     /// increasing. Where they differ the joint is tangent-continuous with a curvature jump
     /// ([`SampledContour::tangent_joints`]).
     pub smooth_joints: Vec<(usize, f64, f64)>,
+    /// A bound on the distance between the subpath and the polyline of its samples (each chord
+    /// against its arc): `n(n − 1) max|Δ²P| / (8 m²)` for a segment of degree n with control
+    /// points P sampled at m equal parameter steps, the largest over the segments.
+    pub chord_error: f64,
 }
 
 impl SampledContour {
@@ -87,8 +91,9 @@ impl SampledContour {
 pub const JOINT_ROOM: usize = 6;
 
 /// Samples every subpath of `path` about every `spacing` (each segment at equal parameter steps,
-/// as many as its control polygon is long in spacings), keeping every segment's end points (so the
-/// corners are samples).
+/// as many as its control polygon is long in spacings, and at least as many as keep its polyline
+/// within `spacing / 8` of it, see [`SampledContour::chord_error`]), keeping every segment's end
+/// points (so the corners are samples).
 ///
 /// ```
 /// use subdiv_fit::{Closure, sample_bez_path};
@@ -127,7 +132,12 @@ pub fn sample_bez_path(
             sub.iter()
                 .map(|c| {
                     let len: f64 = c.points().windows(2).map(|w| (w[1] - w[0]).norm()).sum();
-                    let m = (len / spacing).ceil().max(1.0);
+                    // The chord error n(n − 1) max|Δ²P| / (8 m²) at most spacing / 8.
+                    let bend = second_difference_bound(c);
+                    let m = (len / spacing)
+                        .ceil()
+                        .max((bend / spacing).sqrt().ceil())
+                        .max(1.0);
                     total += m;
                     if m.is_finite() {
                         m as usize
@@ -169,6 +179,18 @@ pub fn sample_svg_path(data: &str, spacing: f64) -> Result<Vec<SampledContour>, 
     sample_bez_path(&path, spacing)
 }
 
+/// `n(n − 1) max|Δ²P|` of a Bézier segment of degree n: a bound on the norm of its second
+/// derivative.
+fn second_difference_bound(c: &BezierCurve<2>) -> f64 {
+    let n = c.points().len().saturating_sub(1) as f64;
+    let d2 = c
+        .points()
+        .windows(3)
+        .map(|w| (w[2] - 2.0 * w[1] + w[0]).norm())
+        .fold(0.0, f64::max);
+    n * (n - 1.0) * d2
+}
+
 fn sample_subpath(sub: &[BezierCurve<2>], counts: &[usize]) -> SampledContour {
     let (Some(first), Some(last)) = (sub.first(), sub.last()) else {
         return SampledContour {
@@ -177,6 +199,7 @@ fn sample_subpath(sub: &[BezierCurve<2>], counts: &[usize]) -> SampledContour {
             corners: Vec::new(),
             corner_tangents: Vec::new(),
             smooth_joints: Vec::new(),
+            chord_error: 0.0,
         };
     };
     let closed = first.start() == last.end() && sub.len() > 1;
@@ -184,7 +207,10 @@ fn sample_subpath(sub: &[BezierCurve<2>], counts: &[usize]) -> SampledContour {
     let mut corners: Vec<usize> = Vec::new();
     let mut corner_tangents: Vec<(Vector2, Vector2)> = Vec::new();
     let mut smooth_joints: Vec<(usize, f64, f64)> = Vec::new();
+    let mut chord_error = 0.0_f64;
     for (j, (c, &m)) in sub.iter().zip(counts).enumerate() {
+        let steps = m as f64;
+        chord_error = chord_error.max(second_difference_bound(c) / (8.0 * steps * steps));
         let joint = if j > 0 {
             Some(&sub[j - 1])
         } else if closed {
@@ -240,6 +266,7 @@ fn sample_subpath(sub: &[BezierCurve<2>], counts: &[usize]) -> SampledContour {
         corners,
         corner_tangents,
         smooth_joints,
+        chord_error,
     }
 }
 
@@ -258,7 +285,9 @@ fn end_tangent(c: &BezierCurve<2>) -> Option<Vector2> {
 /// `tolerance`, the path's corners given as known corners with the path's exact tangents there, so
 /// that [`FitOptions::corner_tolerance`] bounds the turns against the outline itself) and returns
 /// the fitted curves as one path of cubic Bézier segments, with the fits. Subpaths with fewer than
-/// 3 samples are left out.
+/// 3 samples are left out. Each contour is fitted at the tolerance less its samples'
+/// [`SampledContour::chord_error`] (at most an eighth of it), so that the fit's two-sided error
+/// holds against the path, not only against its samples.
 ///
 /// The path states its tangent discontinuities exactly, so they are all its corners: no other
 /// corner is detected on its samples ([`FitOptions::sharp_angle`] is taken as 0), and a bend that is smooth in the path stays
@@ -294,6 +323,9 @@ pub fn fit_bez_path(
         if contour.points.len() < 3 {
             continue;
         }
+        // Within the tolerance of the path itself: the samples' polyline is within the chord
+        // error of it (at most an eighth of the tolerance).
+        let only_given = only_given.with_tolerance(options.tolerance - contour.chord_error);
         let joints = options
             .tangent_jump
             .map(|threshold| contour.tangent_joints(threshold))

@@ -509,6 +509,73 @@ fn fit_bez_path_keeps_the_paths_corner_turns() {
     }
 }
 
+/// `fit_bez_path` keeps the tolerance against the path itself, not only its samples: on an
+/// outline of tight quadratics at a coarse tolerance the fit's distance to dense points of the
+/// true path (and theirs to the fit), by kurbo's nearest points, stays within it, with either
+/// sharp kind.
+#[cfg(feature = "kurbo")]
+#[test]
+fn fit_bez_path_keeps_the_tolerance_against_the_path() {
+    use kurbo::{ParamCurve, ParamCurveNearest, PathSeg};
+    let path = kurbo::BezPath::from_svg(
+        "M0 0 L1 0 Q1.2 0 1.2 0.2 L1.2 0.5 Q1.2 0.62 1.05 0.6 Q0.6 0.55 0.5 0.9 L0 0.9 Z",
+    )
+    .unwrap();
+    let truth: Vec<PathSeg> = path.segments().collect();
+    for tol in [1e-2, 3e-2] {
+        for kind in [VertexKind::Sharp, VertexKind::SharpCurved] {
+            let opts = FitOptions::new(tol)
+                .with_reduction(Reduction::Refit)
+                .with_corner_kind(kind);
+            let (fitted, _) = subdiv_fit::fit_bez_path(&path, &opts).unwrap();
+            let fitted: Vec<PathSeg> = fitted.segments().collect();
+            let one_sided = |from: &[PathSeg], to: &[PathSeg]| {
+                let mut worst = 0.0_f64;
+                for seg in from {
+                    for k in 0..=64 {
+                        let p = seg.eval(f64::from(k) / 64.0);
+                        let d = to
+                            .iter()
+                            .map(|s| s.nearest(p, 1e-12).distance_sq)
+                            .fold(f64::INFINITY, f64::min);
+                        worst = worst.max(d.sqrt());
+                    }
+                }
+                worst
+            };
+            let error = one_sided(&fitted, &truth).max(one_sided(&truth, &fitted));
+            assert!(error <= tol, "{tol} {kind:?}: {error}");
+            // The samples' polyline is within the chord-error bound of the path both ways (points
+            // of the path to the polyline, chord midpoints to the path), and the bound within an
+            // eighth of the spacing.
+            let contour = &subdiv_fit::sample_bez_path(&path, tol).unwrap()[0];
+            let bound = contour.chord_error;
+            assert!(bound > 0.0 && bound <= tol / 8.0, "{bound}");
+            let samples = &contour.points;
+            // The closed polyline: the samples and the first again.
+            let closed: Vec<Vector2> = samples.iter().chain(&samples[..1]).copied().collect();
+            let to_polyline =
+                |p: kurbo::Point| point_polyline_distance(&Vector2::new(p.x, p.y), &closed);
+            for seg in &truth {
+                for k in 0..=256 {
+                    let d = to_polyline(seg.eval(f64::from(k) / 256.0));
+                    assert!(d <= bound + 1e-12, "{tol}: {d} > {bound}");
+                }
+            }
+            for (k, a) in samples.iter().enumerate() {
+                let b = samples[(k + 1) % samples.len()];
+                let mid = kurbo::Point::new(0.5 * (a.x() + b.x()), 0.5 * (a.y() + b.y()));
+                let d = truth
+                    .iter()
+                    .map(|s| s.nearest(mid, 1e-12).distance_sq)
+                    .fold(f64::INFINITY, f64::min)
+                    .sqrt();
+                assert!(d <= bound + 1e-12, "{tol}: {d} > {bound}");
+            }
+        }
+    }
+}
+
 /// A path states all its corners: `fit_bez_path` adds no sharp vertex where the path is smooth,
 /// however tight the bend. A rounded rectangle whose corner radius (10⁻³) is below the feature
 /// scale (6 × the tolerance) has four bends that the detection on the samples takes for corners;

@@ -244,7 +244,9 @@ fn times_per_glyph(glyphs: &[Glyph], tol: f64) -> Result<(Vec<f64>, bool), DynEr
         kurbo_all(glyphs, tol);
         Ok(())
     }));
-    let (micros, cpu) = best_cpu_micros(&mut runs, ROUNDS, 1.0)?;
+    // Rounds of at least 20 ms per method: kurbo fits all glyphs in a few ms, about one tick of
+    // the thread's CPU clock.
+    let (micros, cpu) = best_cpu_micros(&mut runs, ROUNDS, 20_000.0)?;
     let per_glyph = |us: f64| us / 1e3 / glyphs.len() as f64;
     Ok((micros.into_iter().map(per_glyph).collect(), cpu))
 }

@@ -30,9 +30,9 @@
 //!
 //! | goal | options | on the printable ASCII of DejaVu Sans at 10⁻³ em |
 //! |---|---|---|
-//! | fastest | [`FitOptions::new`] | 1.48x TrueType's points |
-//! | fewest control points | `.with_reduction(Reduction::Refit).with_corner_kind(VertexKind::SharpCurved)` | 0.96x, corners' turns unchecked |
-//! | fewest points with every corner's turn within 1° of the outline's | the same `.with_corner_tolerance(Some(EXACT_CORNER_TOLERANCE))` with `fit_bez_path` (feature `kurbo`) or [`fit_with_known_corners`] | at most TrueType's count, about 1.5x the time |
+//! | fastest | [`FitOptions::new`] | 1.49x TrueType's points |
+//! | fewest control points | `.with_reduction(Reduction::Refit).with_corner_kind(VertexKind::SharpCurved)` | 0.96x, kept corners' turns unchecked |
+//! | fewest points with every corner's turn within 1° of the outline's | the same `.with_corner_tolerance(Some(EXACT_CORNER_TOLERANCE))` with `fit_bez_path` (feature `kurbo`) or [`fit_with_known_corners`] | 0.99x, every kept corner within 0.90°, about 1.3x the time of the row above |
 //! | the paper's configuration | [`FitOptions::paper`] | |
 //!
 //! (`docs/papers/subdiv-fit.md` in the repository has the measured table.)

@@ -18,7 +18,11 @@ fn polygon<const D: usize>(
                 n,
             ),
             prop::collection::vec(
-                prop_oneof![Just(VertexKind::Regular), Just(VertexKind::Sharp)],
+                prop_oneof![
+                    2 => Just(VertexKind::Regular),
+                    1 => Just(VertexKind::Sharp),
+                    1 => Just(VertexKind::SharpCurved)
+                ],
                 n,
             ),
             any::<bool>(),
@@ -108,12 +112,29 @@ proptest! {
                 // C2 at a regular vertex.
                 prop_assert!((l.first - r.first).norm() <= tol);
                 prop_assert!((l.second - r.second).norm() <= tol);
-            } else {
+            } else if c.kinds()[v] == VertexKind::Sharp {
                 // One-sided tangents along the polygon edges, zero curvature on both sides.
                 let pv = c.points()[v];
                 prop_assert!((r.first - (c.points()[(v + 1) % n] - pv)).norm() <= tol);
                 prop_assert!((l.first - (pv - c.points()[(v + n - 1) % n])).norm() <= tol);
                 prop_assert!(l.second.norm() <= tol && r.second.norm() <= tol);
+            } else {
+                // A curved corner: the curve passes through the vertex, its one-sided tangents
+                // are `corner_tangents`, and a side with a regular vertex next to the corner
+                // starts with a parabola (no third derivative on that segment).
+                prop_assert!((r.position - c.points()[v]).norm() <= tol);
+                let (ti, to) = c.corner_tangents(v).unwrap();
+                prop_assert!((r.first - to.unwrap()).norm() <= tol * (1.0 + r.first.norm()));
+                prop_assert!((l.first - ti.unwrap()).norm() <= tol * (1.0 + l.first.norm()));
+                let third = |k: [Vector2; 4]| k[0] - 3.0 * k[1] + 3.0 * k[2] - k[3];
+                if !c.is_sharp((v + 1) % n) {
+                    let k = c.segment_controls(next % c.segment_count()).unwrap();
+                    prop_assert!(third(k).norm() <= tol * (1.0 + k[0].norm()));
+                }
+                if !c.is_sharp((v + n - 1) % n) {
+                    let k = c.segment_controls(i).unwrap();
+                    prop_assert!(third(k).norm() <= tol * (1.0 + k[0].norm()));
+                }
             }
         }
     }

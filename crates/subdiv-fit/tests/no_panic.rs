@@ -231,7 +231,7 @@ proptest! {
     #[test]
     fn curves_never_panic(
         pts in wild_points(9),
-        flags in proptest::collection::vec(0u8..3, 0..12),
+        flags in proptest::collection::vec(0u8..4, 0..12),
         closed in any::<bool>(),
         s in wild(), u in wild(), i in 0usize..12, levels in prop_oneof![0usize..4, Just(30), Just(usize::MAX)],
         q in (wild(), wild()),
@@ -245,6 +245,7 @@ proptest! {
             .map(|&f| match f {
                 0 => VertexKind::Regular,
                 1 => VertexKind::Sharp,
+                2 => VertexKind::SharpCurved,
                 _ => VertexKind::Tangent,
             })
             .collect();

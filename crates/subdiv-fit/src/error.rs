@@ -136,6 +136,15 @@ pub enum SubdivFitError {
         /// Why it cannot be one.
         reason: &'static str,
     },
+    /// [`FitOptions::corner_kind`](crate::FitOptions::corner_kind) is not a sharp kind, or is
+    /// [`VertexKind::SharpCurved`] where the fit makes tangent vertices.
+    #[error("corner kind {kind:?} is invalid: {reason}")]
+    InvalidCornerKind {
+        /// The kind given.
+        kind: VertexKind,
+        /// Why it cannot be the fit's corner kind.
+        reason: &'static str,
+    },
     /// A given corner index is not a data index.
     #[error("corner index {index} is outside the {points} data points")]
     CornerOutOfRange {

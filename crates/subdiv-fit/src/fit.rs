@@ -536,9 +536,8 @@ fn validate_options(o: &FitOptions) -> Result<(), SubdivFitError> {
         });
     }
     if !o.corner_kind.is_sharp() {
-        return Err(SubdivFitError::InvalidOption {
-            name: "corner_kind",
-            value: f64::NAN,
+        return Err(SubdivFitError::InvalidCornerKind {
+            kind: o.corner_kind,
             reason: "must be VertexKind::Sharp or VertexKind::SharpCurved",
         });
     }
@@ -863,10 +862,9 @@ fn fit_checked<const D: usize>(
         });
     }
     if options.corner_kind == VertexKind::SharpCurved && !tangents.is_empty() {
-        return Err(SubdivFitError::InvalidOption {
-            name: "corner_kind",
-            value: f64::NAN,
-            reason: "VertexKind::SharpCurved cannot be combined with tangent joints",
+        return Err(SubdivFitError::InvalidCornerKind {
+            kind: options.corner_kind,
+            reason: "cannot be combined with tangent joints",
         });
     }
     let indices: Vec<usize> = corners.iter().map(Corner::index).collect();

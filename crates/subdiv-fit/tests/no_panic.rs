@@ -671,13 +671,27 @@ fn invariant_violating_json_is_refused() {
     }
     // Options written before the corner bound existed read with its default (none); a bound
     // round-trips.
+    // Likewise the corner kind (default: the paper's sharp vertex); a kind that is not sharp
+    // reads and is refused by the fit.
     let mut old = defaults;
     old.as_object_mut().unwrap().remove("corner_tolerance");
-    let read: FitOptions = serde_json::from_value(old).unwrap();
+    old.as_object_mut().unwrap().remove("corner_kind");
+    let read: FitOptions = serde_json::from_value(old.clone()).unwrap();
     assert_eq!(read, FitOptions::new(1e-3));
-    let bounded = FitOptions::new(1e-3).with_corner_tolerance(Some(CORNER_TOLERANCE));
+    let bounded = FitOptions::new(1e-3)
+        .with_corner_tolerance(Some(CORNER_TOLERANCE))
+        .with_corner_kind(VertexKind::SharpCurved);
     let read: FitOptions = serde_json::from_value(serde_json::to_value(bounded).unwrap()).unwrap();
     assert_eq!(read, bounded);
+    old["corner_kind"] = serde_json::json!("Regular");
+    let regular: FitOptions = serde_json::from_value(old).unwrap();
+    assert!(matches!(
+        fit(&data, Closure::Closed, &regular),
+        Err(SubdivFitError::InvalidCornerKind {
+            kind: VertexKind::Regular,
+            ..
+        })
+    ));
     // Known corners: tangents validated as by `Corner::with_tangents`, a valid one round-trips.
     for bad in [
         r#"{"index":1,"tangents":[[0,0],[1,0]]}"#,

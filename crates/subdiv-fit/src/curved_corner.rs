@@ -26,7 +26,7 @@
 //! place of `P`.
 //!
 //! The curve still interpolates `P`; its one-sided tangent there is
-//! `C′(0) = (e₁ − e₋₁)/2 = (11e₁ − 2e₂ − 9P)/7` (`(e₁ − 2P + Q)·… ` in the coupled case, see
+//! `C′(0) = (e₁ − e₋₁)/2 = (11e₁ − 2e₂ − 9P)/7` (`(6e₁ − 5P − Q)/4` in the coupled case; see
 //! [`side_tangent`]) and its curvature there is free, as that of a TrueType quadratic leaving a
 //! corner.
 

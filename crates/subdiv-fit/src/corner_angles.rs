@@ -274,13 +274,7 @@ fn corner_sides<'a, const D: usize>(
             continue;
         }
         for (forwards, direction) in [(false, -c.incoming), (true, c.outgoing)] {
-            let Some(line) = side_line(
-                curve.kinds(),
-                curve.points(),
-                curve.is_closed(),
-                j,
-                forwards,
-            ) else {
+            let Some(line) = side_line(curve, j, forwards) else {
                 continue;
             };
             let vertex = line.vertex;
@@ -325,13 +319,7 @@ fn side_settled<const D: usize>(
     movable: &impl Fn(usize) -> bool,
     settled: &impl Fn(usize, bool) -> bool,
 ) -> bool {
-    let Some(line) = side_line(
-        curve.kinds(),
-        curve.points(),
-        curve.is_closed(),
-        j,
-        forwards,
-    ) else {
+    let Some(line) = side_line(curve, j, forwards) else {
         return true;
     };
     !movable(line.vertex)

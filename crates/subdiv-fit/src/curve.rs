@@ -241,7 +241,8 @@ impl<const D: usize> SubdivCurve<D> {
 
     /// One level of the refinement of Sec. 2.1:
     /// E-vertex `(p_i + p_{i+1}) / 2`, regular V-vertex `(p_{i-1} + 6 p_i + p_{i+1}) / 8`,
-    /// sharp V-vertex `p_i`.
+    /// sharp V-vertex `p_i`; next to a curved sharp vertex the derived point `e₀` of its span
+    /// end takes the vertex's place in these rules.
     /// V-vertices keep their kind; E-vertices are regular.
     /// Next to a tangent vertex the rules are those of knot insertion at the middle of every
     /// segment (the double knot stays double and the edge after it gets no E-vertex).
@@ -260,52 +261,18 @@ impl<const D: usize> SubdivCurve<D> {
                 curved: false,
             };
         }
-        if self.curved {
-            return self.refine_curved();
-        }
         let n = self.points.len();
         let edges = self.edge_count();
         let mut points = Vec::with_capacity(n + edges);
         let mut kinds = Vec::with_capacity(n + edges);
         for i in 0..n {
-            let p = self.points[i];
-            let v = if self.kinds[i].is_sharp() {
-                p
-            } else {
-                // Regular vertices always have both neighbours (open ends are sharp).
-                let prev = self.points[(i + n - 1) % n];
-                let next = self.points[(i + 1) % n];
-                (prev + 6.0 * p + next) / 8.0
-            };
-            points.push(v);
-            kinds.push(self.kinds[i]);
-            if i < edges {
-                points.push((p + self.points[(i + 1) % n]) * 0.5);
-                kinds.push(VertexKind::Regular);
-            }
-        }
-        Self {
-            points,
-            kinds,
-            closure: self.closure,
-            tangents: Vec::new(),
-            curved: false,
-        }
-    }
-
-    /// [`SubdivCurve::refine`] with curved sharp vertices: the regular rules with the derived
-    /// control point `e₀` of a span end in place of the sharp vertex it stands for (module
-    /// `curved_corner`); sharp vertices stay.
-    fn refine_curved(&self) -> Self {
-        let n = self.points.len();
-        let edges = self.edge_count();
-        let mut points = Vec::with_capacity(n + edges);
-        let mut kinds = Vec::with_capacity(n + edges);
-        for i in 0..n {
+            // The segment's control points as vertex i sees them: its neighbours, or at a curved
+            // sharp vertex the derived point e₀ in its place (module `curved_corner`).
             let v = if self.kinds[i].is_sharp() {
                 self.points[i]
             } else {
-                // A regular vertex has the edge after it (an open polygon's ends are sharp).
+                // A regular vertex has both neighbours and the edge after it (an open polygon's
+                // ends are sharp).
                 let [a, b, c, _] = self.uniform_controls(i);
                 (a + 6.0 * b + c) / 8.0
             };
@@ -322,7 +289,7 @@ impl<const D: usize> SubdivCurve<D> {
             kinds,
             closure: self.closure,
             tangents: Vec::new(),
-            curved: true,
+            curved: self.curved,
         }
     }
 

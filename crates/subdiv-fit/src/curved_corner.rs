@@ -32,6 +32,7 @@
 
 use bez_core::Vector;
 
+use crate::SubdivCurve;
 use crate::vertex::VertexKind;
 
 /// A derived control point as a combination of polygon vertices: `(vertex, weight)` pairs, the
@@ -149,14 +150,14 @@ pub(crate) struct SideLine<const D: usize> {
     pub(crate) anchor: Vector<D>,
 }
 
-/// [`SideLine`] of the sharp vertex `j` on the side `forwards`; `None` beyond an open end.
+/// [`SideLine`] of the sharp vertex `j` of `curve` on the side `forwards`; `None` beyond an open
+/// end.
 pub(crate) fn side_line<const D: usize>(
-    kinds: &[VertexKind],
-    points: &[Vector<D>],
-    closed: bool,
+    curve: &SubdivCurve<D>,
     j: usize,
     forwards: bool,
 ) -> Option<SideLine<D>> {
+    let (kinds, points, closed) = (curve.kinds(), curve.points(), curve.is_closed());
     let n1 = step(j, forwards, kinds.len(), closed)?;
     let phantom = span_end(kinds, closed, j, forwards).phantom;
     let w1: f64 = phantom.iter().filter(|e| e.0 == n1).map(|e| e.1).sum();
@@ -245,8 +246,9 @@ mod tests {
                 for &c in &corners {
                     kinds[c] = kind;
                 }
+                let curve = SubdivCurve::new(p.clone(), kinds.clone(), Closure::Closed).unwrap();
                 for forwards in [true, false] {
-                    let line = side_line(&kinds, &p, true, 0, forwards).unwrap();
+                    let line = side_line(&curve, 0, forwards).unwrap();
                     let mut q = p[line.vertex] - line.anchor;
                     if let Some((v, c)) = line.partner {
                         q -= p[v] * c;

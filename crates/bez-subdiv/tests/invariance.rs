@@ -56,8 +56,11 @@ proptest! {
     #![proptest_config(ProptestConfig::with_cases(48))]
 
     /// Scaling by a power of two is exact, so every method returns the scaled polyline: the
-    /// same count, the same parameters up to rounding, every point scaled. (`Flattener`
-    /// rescales curves far from unit size by a power of two first.)
+    /// same count, the same parameters up to rounding, every point scaled up to what that
+    /// rounding of its parameter moves it. (`Flattener` rescales curves far from unit size by a
+    /// power of two first, so the two runs compute at sizes a power of two apart and round
+    /// differently: `Optimal`'s parameters were seen 1.0·10⁻¹² apart on a quintic at 2⁴⁹⁸,
+    /// hence 10⁻¹¹.)
     #[test]
     fn scaling_by_powers_of_two_scales_the_polyline(
         curve in bez_core::proptest_support::curve::<2>(1..=7, 10.0),
@@ -66,13 +69,22 @@ proptest! {
         let s = 2f64.powi(exponent);
         let tolerance = 1e-3 * 10.0;
         let scaled = moved(&curve, |p| p * s);
+        // A bound on |B′|, n max|P_{i+1} − P_i|: a point at a parameter that rounding moved by
+        // dt moves by at most that times dt.
+        let n = (curve.points().len() - 1) as f64;
+        let speed = n * curve
+            .points()
+            .windows(2)
+            .map(|w| (w[1] - w[0]).norm())
+            .fold(0.0, f64::max);
         for method in METHODS {
             let a = polyline(&curve, tolerance, method);
             let b = polyline(&scaled, tolerance * s, method);
             prop_assert_eq!(a.len(), b.len(), "{:?} at 2^{}", method, exponent);
             for ((t, p), (u, q)) in a.iter().zip(&b) {
-                prop_assert!((t - u).abs() <= 1e-12, "{:?} at 2^{}: t = {} vs {}", method, exponent, t, u);
-                prop_assert!((*p * s - *q).norm() <= 1e-12 * s * 10.0, "{:?}: {:?} vs {:?}", method, p, q);
+                prop_assert!((t - u).abs() <= 1e-11, "{:?} at 2^{}: t = {} vs {}", method, exponent, t, u);
+                let allowed = s * (1e-12 * 10.0 + speed * (t - u).abs());
+                prop_assert!((*p * s - *q).norm() <= allowed, "{:?}: {:?} vs {:?}", method, p, q);
             }
         }
     }

@@ -80,6 +80,7 @@ mod measure;
 mod model_march;
 mod near_optimal;
 mod optimal;
+mod parabola;
 mod split_rule;
 mod stack_horner;
 #[cfg(test)]

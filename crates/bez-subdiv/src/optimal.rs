@@ -1,11 +1,13 @@
 //! Beyond the paper: near-optimal guaranteed flattening, placed by the curvature density
-//! √(|κ| / (8 tol)) and verified segment by segment with closed-form bounds (degree ≤ 3; above,
-//! the march on cubic models of [`model_march`](crate::model_march)).
+//! √(|κ| / (8 tol)) and verified segment by segment with closed-form bounds (degree ≤ 3; most
+//! quadratics by the greedy march of [`parabola`](crate::parabola); above degree 3, the march on
+//! cubic models of [`model_march`](crate::model_march)).
 
 use bez_core::{BezierCurve, BezierForm, Vector2};
 
 use crate::error::SubdivError;
 use crate::guaranteed::FlatPoint;
+use crate::parabola::ParabolaChords;
 
 /// The most segments one call places (2²⁰), checked before the first point is sent.
 pub(crate) const MAX_OPTIMAL_SEGMENTS: usize = 1 << 20;
@@ -246,6 +248,13 @@ impl<S: FnMut(FlatPoint)> March<'_, S> {
         } else {
             to = self.shorten(a, to, e)?;
         }
+        self.send(&to)?;
+        Ok(to)
+    }
+
+    /// Sends the end point of one more segment.
+    #[inline(always)]
+    fn send(&mut self, to: &Jet) -> Result<(), SubdivError> {
         self.segments += 1;
         if self.segments > MAX_OPTIMAL_SEGMENTS {
             return Err(SubdivError::TooManySegments {
@@ -257,7 +266,7 @@ impl<S: FnMut(FlatPoint)> March<'_, S> {
             t: to.t,
             point: to.point,
         });
-        Ok(to)
+        Ok(())
     }
 
     /// Shortens the chord from `a` to `to`, whose bound `e` fails, until its bound holds.
@@ -433,7 +442,10 @@ fn place<S: FnMut(FlatPoint)>(
 /// inverted in closed form). Each chord is checked by the closed-form bound of `chord_bound`
 /// (B′ and B″ at the chord's ends and the constant B‴); a chord whose bound exceeds the
 /// tolerance is shortened until it holds, one whose bound is below 0.9 tol is tried once
-/// longer: O(1) per point, no allocation. Above, the curve is covered piece by piece by cubic
+/// longer: O(1) per point, no allocation. A quadratic whose tolerance is below its vertex
+/// radius takes the greedy march of [`parabola`](crate::parabola) instead: from each point the
+/// longest chord within the tolerance, in closed form and checked in closed form (the chords
+/// of N* itself), O(1) per point. Above degree 3, the curve is covered piece by piece by cubic
 /// models with rigorous remainders and each chord is verified exactly on the models
 /// ([`model_march`](crate::model_march)); the points sent there are the models' points, within
 /// their remainder (≤ tol / 32) of B(t), the end points exact: O(1) per point, O(n) per model
@@ -485,7 +497,7 @@ fn optimal_bezier(
     last.point = end;
     let cells = ceil_small(work.wang_steps * NODES_PER_WANG_STEP).clamp(1.0, MAX_CUBIC_CELLS as f64)
         as usize;
-    let march = March {
+    let mut march = March {
         power: &power,
         sink,
         accept,
@@ -496,6 +508,12 @@ fn optimal_bezier(
         jerk: power.c * 6.0,
         third: 6.0 * power.c.norm(),
     };
+    if p.len() == 3
+        && let Some(chords) = ParabolaChords::new(power.a, power.b, accept)
+    {
+        march_parabola(&mut march, &chords, first)?;
+        return Ok(march.segments);
+    }
     // The nodes live in arrays of the call's stack frame; short ones when they suffice, since
     // the whole arrays are zeroed on every call.
     if cells <= SHORTEST_CUBIC_CELLS {
@@ -505,6 +523,51 @@ fn optimal_bezier(
     } else {
         march_power::<{ MAX_CUBIC_CELLS + 1 }, _>(march, cells, first)
     }
+}
+
+/// The greedy march of a quadratic whose control points are not collinear: from each point the
+/// longest chord of [`ParabolaChords`] (one step of its fixed-point iteration from the last
+/// chord's length, a second when that chord does not hold), and where neither holds (a
+/// projection that would fold back near a sharp vertex) the verified chord of
+/// [`March::segment`], shortened until its bound holds. Each closed-form step is at least
+/// Wang's (|a × b| ≤ |B′| |b|), so the segments number at most Wang's count, checked before.
+fn march_parabola<S: FnMut(FlatPoint)>(
+    march: &mut March<'_, S>,
+    chords: &ParabolaChords,
+    first: Jet,
+) -> Result<(), SubdivError> {
+    let mut a = first;
+    let mut h = chords.longest(a.d1, 0.0);
+    while a.t < 1.0 {
+        // The chord's end, t = 1 exactly once the step reaches it.
+        let end = |step: f64| {
+            if a.t + step >= 1.0 {
+                march.last
+            } else {
+                march.jet(a.t + step)
+            }
+        };
+        let mut to = end(chords.longest(a.d1, h));
+        let mut holds = chords.holds(a.d1, to.t - a.t);
+        if !holds {
+            to = end(chords.longest(a.d1, to.t - a.t));
+            holds = chords.holds(a.d1, to.t - a.t);
+        }
+        let b = if holds && to.t > a.t {
+            march.send(&to)?;
+            to
+        } else {
+            let to = if to.t > a.t {
+                to
+            } else {
+                march.jet(a.t + march.min_step().max(1e-3))
+            };
+            march.segment(&a, to)?
+        };
+        h = b.t - a.t;
+        a = b;
+    }
+    Ok(())
 }
 
 /// The march of a curve of degree ≤ 3 over `cells` equal density cells (N > `cells`, the
@@ -707,6 +770,24 @@ mod tests {
             let sampling = HausdorffSampling { curve_samples: 2001, segment_samples: 3 };
             let e = error_over_tol(&c, tol, sampling);
             prop_assert!(e <= 1.0 + 1e-9, "{}", e);
+        }
+
+        /// Quadratics (the closed-form greedy march, or the general one for spikes) at
+        /// tolerances 1e-5 to 1e-1 of their size: within the tolerance, and no more segments
+        /// than N* rounded up plus one (the greedy chords are N*'s own, the last one partial).
+        #[test]
+        fn quadratics_are_within_tolerance(c in curve::<2>(2..=2, 10.0), rel in 1e-5f64..1e-1) {
+            let tol = rel * crate::curve_size(&c).max(1e-3);
+            let sampling = HausdorffSampling { curve_samples: 4001, segment_samples: 5 };
+            let e = error_over_tol(&c, tol, sampling);
+            prop_assert!(e <= 1.0 + 1e-9, "{}", e);
+            let p = c.points();
+            let (a, b) = ((p[1] - p[0]) * 2.0, p[2] - p[1] * 2.0 + p[0]);
+            if ParabolaChords::new(a, b, tol).is_some() {
+                let n = flatten_optimal(&c, tol, 40, |_| {}).unwrap();
+                let n_star = crate::optimal_segment_count(&c, tol).unwrap();
+                prop_assert!(n as f64 <= n_star.ceil() + 1.0, "{} vs N* {}", n, n_star);
+            }
         }
     }
 

@@ -104,12 +104,13 @@ fn guaranteed(c: &BezierCurve<2>, tol: f64, out: &mut Vec<Vector2>) -> Result<()
 }
 
 fn kurbo_flatten(c: &BezierCurve<2>, tol: f64, out: &mut Vec<Vector2>) -> Result<(), DynError> {
-    use kurbo::{BezPath, CubicBez, PathEl};
-    // kurbo's flatten is run on cubics only: another degree is an error.
+    use kurbo::{CubicBez, PathEl};
+    // kurbo's flatten is run on cubics only: another degree is an error. The path is two
+    // elements, no allocation.
     let CubicBez { p0, p1, p2, p3 } = CubicBez::try_from(c)?;
-    let path = BezPath::from_vec(vec![PathEl::MoveTo(p0), PathEl::CurveTo(p1, p2, p3)]);
+    let path = [PathEl::MoveTo(p0), PathEl::CurveTo(p1, p2, p3)];
     out.clear();
-    kurbo::flatten(&path, tol, |el| match el {
+    kurbo::flatten(path, tol, |el| match el {
         PathEl::MoveTo(q) | PathEl::LineTo(q) => out.push(q.into()),
         _ => {}
     });

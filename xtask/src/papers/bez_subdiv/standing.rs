@@ -104,18 +104,19 @@ fn ours(c: &BezierCurve<2>, tol: f64, m: Method, out: &mut Vec<Vector2>) -> Resu
     Ok(())
 }
 
-/// kurbo's `flatten` of a one-curve path (a cubic, or a quadratic as `QuadTo`).
+/// kurbo's `flatten` of a one-curve path (a cubic, or a quadratic as `QuadTo`), given as two
+/// path elements (no allocation, as the others).
 fn kurbo_flatten(c: &BezierCurve<2>, tol: f64, out: &mut Vec<Vector2>) -> Result<(), DynError> {
-    use kurbo::{BezPath, CubicBez, PathEl, QuadBez};
+    use kurbo::{CubicBez, PathEl, QuadBez};
     let path = if c.degree() == 2 {
         let QuadBez { p0, p1, p2 } = QuadBez::try_from(c)?;
-        BezPath::from_vec(vec![PathEl::MoveTo(p0), PathEl::QuadTo(p1, p2)])
+        [PathEl::MoveTo(p0), PathEl::QuadTo(p1, p2)]
     } else {
         let CubicBez { p0, p1, p2, p3 } = CubicBez::try_from(c)?;
-        BezPath::from_vec(vec![PathEl::MoveTo(p0), PathEl::CurveTo(p1, p2, p3)])
+        [PathEl::MoveTo(p0), PathEl::CurveTo(p1, p2, p3)]
     };
     out.clear();
-    kurbo::flatten(&path, tol, |el| match el {
+    kurbo::flatten(path, tol, |el| match el {
         PathEl::MoveTo(q) | PathEl::LineTo(q) => out.push(q.into()),
         _ => {}
     });

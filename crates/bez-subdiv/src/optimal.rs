@@ -332,11 +332,19 @@ fn invert_cell(r0: f64, r1: f64, w: f64, per_w: f64, mass: f64) -> f64 {
     }
 }
 
-/// The integral of the density (linear between `nodes`, pairs (t, density), whose integrals
-/// from t = 0 are `masses`) and its inverse, by a cursor over the cells.
+/// A density node: its parameter, the density there and the density's integral from t = 0
+/// (the trapezoidal rule over the nodes before).
+#[derive(Debug, Clone, Copy, Default)]
+struct Node {
+    t: f64,
+    density: f64,
+    mass: f64,
+}
+
+/// The integral of the density (linear between `nodes`) and its inverse, by a cursor over the
+/// cells.
 struct Cumulative<'a> {
-    nodes: &'a [(f64, f64)],
-    masses: &'a [f64],
+    nodes: &'a [Node],
     /// The number of cells, 1 / their width.
     per_cell: f64,
     /// The current cell, `nodes[cell - 1]` to `nodes[cell]`.
@@ -346,47 +354,49 @@ struct Cumulative<'a> {
 impl Cumulative<'_> {
     /// The integral up to `t`.
     fn at(&mut self, t: f64) -> f64 {
-        while self.cell > 1 && self.nodes[self.cell - 1].0 > t {
+        while self.cell > 1 && self.nodes[self.cell - 1].t > t {
             self.cell -= 1;
         }
-        while self.cell + 1 < self.nodes.len() && self.nodes[self.cell].0 < t {
+        while self.cell + 1 < self.nodes.len() && self.nodes[self.cell].t < t {
             self.cell += 1;
         }
-        let ((t0, r0), (t1, r1)) = (self.nodes[self.cell - 1], self.nodes[self.cell]);
-        let x = (t - t0).clamp(0.0, t1 - t0);
-        let w = t1 - t0;
-        let slope = if w > 0.0 { (r1 - r0) / w } else { 0.0 };
-        self.masses[self.cell - 1] + r0 * x + 0.5 * slope * x * x
+        let (a, b) = (self.nodes[self.cell - 1], self.nodes[self.cell]);
+        let x = (t - a.t).clamp(0.0, b.t - a.t);
+        let w = b.t - a.t;
+        let slope = if w > 0.0 {
+            (b.density - a.density) / w
+        } else {
+            0.0
+        };
+        a.mass + a.density * x + 0.5 * slope * x * x
     }
 
-    /// The parameter where the integral reaches `target`.
+    /// The parameter where the integral reaches `target`, at or after the cursor's cell (the
+    /// march's targets only grow: each is at least the integral where the cursor was left).
     #[inline(always)]
     fn inverse(&mut self, target: f64) -> f64 {
-        while self.cell > 1 && self.masses[self.cell - 1] > target {
-            self.cell -= 1;
-        }
-        while self.cell + 1 < self.masses.len() && self.masses[self.cell] < target {
+        let last = self.nodes.len() - 1;
+        while self.cell < last && self.nodes[self.cell].mass < target {
             self.cell += 1;
         }
-        let ((t0, r0), (t1, r1)) = (self.nodes[self.cell - 1], self.nodes[self.cell]);
-        let before = self.masses[self.cell - 1];
-        (t0 + invert_cell(r0, r1, t1 - t0, self.per_cell, (target - before).max(0.0))).min(1.0)
+        let (a, b) = (self.nodes[self.cell - 1], self.nodes[self.cell]);
+        let mass = (target - a.mass).max(0.0);
+        (a.t + invert_cell(a.density, b.density, b.t - a.t, self.per_cell, mass)).min(1.0)
     }
 }
 
-/// Places the points of the density march on `nodes` (t, density; t from 0 to 1, at least
-/// two; `masses` their integrals from 0) and sends them through `march`.
+/// Places the points of the density march on `nodes` (t from 0 to 1, at least two) and sends
+/// them through `march`.
 ///
 /// Steps of equal mass, the integral's total over ⌈total / √(8 tol)⌉ (each at most one
 /// segment of the model); a step the bound shortens or lengthens moves the mass reached to its
 /// end, so later steps keep their length.
 fn place<S: FnMut(FlatPoint)>(
     march: &mut March<'_, S>,
-    nodes: &[(f64, f64)],
-    masses: &[f64],
+    nodes: &[Node],
     first: Jet,
 ) -> Result<(), SubdivError> {
-    let total = masses[masses.len() - 1];
+    let total = nodes[nodes.len() - 1].mass;
     let scale = 1.0 / (8.0 * march.tolerance).sqrt();
     let raw = total * scale;
     // Also a NaN or infinite estimate (overflowing densities).
@@ -402,7 +412,6 @@ fn place<S: FnMut(FlatPoint)>(
     let last = march.last;
     let mut cumulative = Cumulative {
         nodes,
-        masses,
         per_cell: (nodes.len() - 1) as f64,
         cell: 1,
     };
@@ -578,18 +587,24 @@ fn march_power<const N: usize, S: FnMut(FlatPoint)>(
     first: Jet,
 ) -> Result<usize, SubdivError> {
     let power = march.power;
-    let mut nodes = [(0.0, 0.0); N];
-    let mut masses = [0.0; N];
-    let mut previous = (0.0, power.density(0.0));
+    let mut nodes = [Node::default(); N];
+    let mut previous = Node {
+        t: 0.0,
+        density: power.density(0.0),
+        mass: 0.0,
+    };
     nodes[0] = previous;
-    for j in 1..=cells {
-        let t = j as f64 / cells as f64;
-        let node = (t, power.density(t));
-        nodes[j] = node;
-        masses[j] = masses[j - 1] + 0.5 * (previous.1 + node.1) * (t - previous.0);
-        previous = node;
+    for (j, node) in (1..).zip(&mut nodes[1..=cells]) {
+        let t = f64::from(j) / cells as f64;
+        let density = power.density(t);
+        *node = Node {
+            t,
+            density,
+            mass: previous.mass + 0.5 * (previous.density + density) * (t - previous.t),
+        };
+        previous = *node;
     }
-    place(&mut march, &nodes[..=cells], &masses[..=cells], first)?;
+    place(&mut march, &nodes[..=cells], first)?;
     Ok(march.segments)
 }
 

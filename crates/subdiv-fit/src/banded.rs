@@ -83,23 +83,27 @@ impl CyclicBand {
     /// Solves M x = b for `D` right-hand sides. `None` when M is not (numerically) positive
     /// definite or the solution is not finite.
     pub(crate) fn solve<const D: usize>(&self, rhs: &[[f64; D]]) -> Option<Vec<[f64; D]>> {
+        self.factor()?.solve(rhs)
+    }
+
+    /// The Cholesky factorization of M, for solves with several right-hand sides. `None` for
+    /// an empty matrix or one that is not (numerically) positive definite.
+    pub(crate) fn factor(&self) -> Option<BandFactor> {
         let u = self.u;
-        if rhs.len() != u || u == 0 {
+        if u == 0 {
             return None;
         }
-        let x = if self.dense.is_some() {
+        if self.dense.is_some() {
             let m: Vec<Vec<f64>> = (0..u)
                 .map(|i| (0..u).map(|j| self.get(i, j)).collect())
                 .collect();
-            dense_solve(m, rhs)?
-        } else {
-            self.bordered_solve(rhs)?
-        };
-        x.iter().flatten().all(|v| v.is_finite()).then_some(x)
+            return Some(BandFactor::Dense(dense_cholesky(m)?));
+        }
+        self.bordered_factor()
     }
 
-    /// The band-plus-border solve (u > 2·HALF_WIDTH + 2).
-    fn bordered_solve<const D: usize>(&self, rhs: &[[f64; D]]) -> Option<Vec<[f64; D]>> {
+    /// The band-plus-border factorization (u > 2·HALF_WIDTH + 2).
+    fn bordered_factor(&self) -> Option<BandFactor> {
         const W: usize = HALF_WIDTH;
         let u = self.u;
         let m = u - W;
@@ -142,56 +146,111 @@ impl CyclicBand {
             }
         }
         let ls = dense_cholesky(s)?;
-        // Forward: y1 = L⁻¹ b1, y2 = Ls⁻¹ (b2 − Wᵀ y1).
-        let mut y = rhs.to_vec();
-        for i in 0..m {
-            for k in i.saturating_sub(W)..i {
-                let lik = l[i][i - k];
-                let yk = y[k];
-                for (v, yk) in y[i].iter_mut().zip(yk) {
-                    *v -= lik * yk;
-                }
-            }
-            for v in &mut y[i] {
-                *v /= l[i][0];
-            }
-        }
-        for a in 0..W {
-            for i in 0..m {
-                let (wa, yi) = (wmat[i][a], y[i]);
-                for (v, yi) in y[m + a].iter_mut().zip(yi) {
-                    *v -= wa * yi;
-                }
-            }
-        }
-        let mut y2: Vec<[f64; D]> = y[m..].to_vec();
-        forward(&ls, &mut y2);
-        backward(&ls, &mut y2);
-        // Back: Lᵀ x1 = y1 − W x2.
-        let mut x = y;
-        x[m..].copy_from_slice(&y2);
-        for i in 0..m {
-            for (c, x2) in y2.iter().enumerate() {
-                let wc = wmat[i][c];
-                for (v, x2) in x[i].iter_mut().zip(x2) {
-                    *v -= wc * x2;
-                }
-            }
-        }
-        for i in (0..m).rev() {
-            for k in i + 1..(i + W + 1).min(m) {
-                let lki = l[k][k - i];
-                let xk = x[k];
-                for (v, xk) in x[i].iter_mut().zip(xk) {
-                    *v -= lki * xk;
-                }
-            }
-            for v in &mut x[i] {
-                *v /= l[i][0];
-            }
-        }
-        Some(x)
+        Some(BandFactor::Bordered { l, wmat, ls })
     }
+}
+
+/// The Cholesky factorization of a [`CyclicBand`] ([`CyclicBand::factor`]): one factorization
+/// for several solves (the refit's unconstrained solve and one per constrained point).
+#[derive(Debug, Clone)]
+pub(crate) enum BandFactor {
+    /// Small systems: the dense lower factor.
+    Dense(Vec<Vec<f64>>),
+    /// The band's factor L (`l[i][d]` = L[i][i − d]), W = L⁻¹B and the Schur complement's
+    /// factor.
+    Bordered {
+        l: Vec<[f64; HALF_WIDTH + 1]>,
+        wmat: Vec<[f64; HALF_WIDTH]>,
+        ls: Vec<Vec<f64>>,
+    },
+}
+
+impl BandFactor {
+    /// The number of unknowns.
+    pub(crate) fn size(&self) -> usize {
+        match self {
+            Self::Dense(l) => l.len(),
+            Self::Bordered { l, .. } => l.len() + HALF_WIDTH,
+        }
+    }
+
+    /// Solves M x = b for `D` right-hand sides. `None` when `rhs` has another size or the
+    /// solution is not finite.
+    pub(crate) fn solve<const D: usize>(&self, rhs: &[[f64; D]]) -> Option<Vec<[f64; D]>> {
+        if rhs.len() != self.size() {
+            return None;
+        }
+        let x = match self {
+            Self::Dense(l) => {
+                let mut y = rhs.to_vec();
+                forward(l, &mut y);
+                backward(l, &mut y);
+                y
+            }
+            Self::Bordered { l, wmat, ls } => bordered_solve(l, wmat, ls, rhs),
+        };
+        x.iter().flatten().all(|v| v.is_finite()).then_some(x)
+    }
+}
+
+/// The band-plus-border solve with the factors of [`CyclicBand::bordered_factor`].
+fn bordered_solve<const D: usize>(
+    l: &[[f64; HALF_WIDTH + 1]],
+    wmat: &[[f64; HALF_WIDTH]],
+    ls: &[Vec<f64>],
+    rhs: &[[f64; D]],
+) -> Vec<[f64; D]> {
+    const W: usize = HALF_WIDTH;
+    let m = l.len();
+    // Forward: y1 = L⁻¹ b1, y2 = Ls⁻¹ (b2 − Wᵀ y1).
+    let mut y = rhs.to_vec();
+    for i in 0..m {
+        for k in i.saturating_sub(W)..i {
+            let lik = l[i][i - k];
+            let yk = y[k];
+            for (v, yk) in y[i].iter_mut().zip(yk) {
+                *v -= lik * yk;
+            }
+        }
+        for v in &mut y[i] {
+            *v /= l[i][0];
+        }
+    }
+    for a in 0..W {
+        for i in 0..m {
+            let (wa, yi) = (wmat[i][a], y[i]);
+            for (v, yi) in y[m + a].iter_mut().zip(yi) {
+                *v -= wa * yi;
+            }
+        }
+    }
+    let mut y2: Vec<[f64; D]> = y[m..].to_vec();
+    forward(ls, &mut y2);
+    backward(ls, &mut y2);
+    // Back: Lᵀ x1 = y1 − W x2.
+    let mut x = y;
+    x[m..].copy_from_slice(&y2);
+    for i in 0..m {
+        for (c, x2) in y2.iter().enumerate() {
+            let wc = wmat[i][c];
+            for (v, x2) in x[i].iter_mut().zip(x2) {
+                *v -= wc * x2;
+            }
+        }
+    }
+    for i in (0..m).rev() {
+        for k in i + 1..(i + W + 1).min(m) {
+            let lki = l[k][k - i];
+            let xk = x[k];
+            for (v, xk) in x[i].iter_mut().zip(xk) {
+                *v -= lki * xk;
+            }
+        }
+        for v in &mut x[i] {
+            *v /= l[i][0];
+        }
+    }
+    x
 }
 
 /// Lower Cholesky factor of a small dense SPD matrix; `None` if it is not positive definite.
@@ -248,15 +307,6 @@ fn backward<const D: usize>(l: &[Vec<f64>], y: &mut [[f64; D]]) {
             *v /= l[i][i];
         }
     }
-}
-
-/// Dense SPD solve by Cholesky (small systems).
-fn dense_solve<const D: usize>(m: Vec<Vec<f64>>, rhs: &[[f64; D]]) -> Option<Vec<[f64; D]>> {
-    let l = dense_cholesky(m)?;
-    let mut y = rhs.to_vec();
-    forward(&l, &mut y);
-    backward(&l, &mut y);
-    Some(y)
 }
 
 #[cfg(test)]

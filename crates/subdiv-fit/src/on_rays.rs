@@ -19,7 +19,7 @@
 //! `X_c − κ X_w` of the neighbour and the free point beyond it; the constraint row `e_c` is then
 //! `a_c = e_c − κ e_w` throughout: `g_c = N⁻¹ a_c` and `a_cᵀ X` in place of `X_c`.
 
-use crate::banded::CyclicBand;
+use crate::banded::BandFactor;
 
 /// A constraint of [`solve_on_rays`]: unknown `column`, less `partner.1` times unknown
 /// `partner.0` if given, is `anchor + λ direction` (`direction` a unit vector).
@@ -35,7 +35,7 @@ pub(crate) struct RayColumn<const D: usize> {
 /// `n`, `D` coordinates) with the `rays` constraints, and their `λ`. `None` when a system is
 /// singular or the result not finite.
 pub(crate) fn solve_on_rays<const D: usize>(
-    n: &CyclicBand,
+    n: &BandFactor,
     b: &[[f64; D]],
     rays: &[RayColumn<D>],
 ) -> Option<(Vec<[f64; D]>, Vec<f64>)> {
@@ -252,7 +252,7 @@ mod tests {
                     direction: [a.cos(), a.sin()],
                 })
                 .collect();
-            let (x, lambdas) = solve_on_rays(&band, &rhs, &rays).unwrap();
+            let (x, lambdas) = solve_on_rays(&band.factor().unwrap(), &rhs, &rays).unwrap();
             let at = |ray: &RayColumn<2>, l: f64| {
                 (ray.column, [ray.anchor[0] + l * ray.direction[0], ray.anchor[1] + l * ray.direction[1]])
             };
@@ -305,7 +305,7 @@ mod tests {
                 anchor: [0.3, -0.2],
                 direction: [angle.cos(), angle.sin()],
             };
-            let (x, lambdas) = solve_on_rays(&band, &rhs, &[ray]).unwrap();
+            let (x, lambdas) = solve_on_rays(&band.factor().unwrap(), &rhs, &[ray]).unwrap();
             let scale = rhs.iter().flatten().fold(1.0_f64, |m, v| m.max(v.abs()));
             for ((&x0, &x1), (&a, &t)) in x[0].iter().zip(&x[1]).zip(ray.anchor.iter().zip(&ray.direction)) {
                 let (on, want) = (x0 - kappa * x1, a + lambdas[0] * t);

@@ -465,7 +465,8 @@ fn place<S: FnMut(FlatPoint)>(
 /// [`SubdivError::TooFewPoints`], [`SubdivError::InvalidTolerance`],
 /// [`SubdivError::DepthTooLarge`], [`SubdivError::ToleranceBelowRounding`] (checked before any
 /// work), [`SubdivError::TooManySegments`] above 2²⁰ segments (up to degree 3 the estimate is
-/// checked before the first point; above, Wang's count ≤ 2²⁰ is checked first), [`SubdivError::DepthLimit`] when an arc shorter than 2^−`max_depth` fails
+/// checked before the first point, or for a quadratic on the closed-form march Wang's count,
+/// which bounds its closed-form steps; above, Wang's count ≤ 2²⁰ is checked first), [`SubdivError::DepthLimit`] when an arc shorter than 2^−`max_depth` fails
 /// its bound.
 pub(crate) fn flatten_optimal<C: BezierForm<2> + ?Sized>(
     curve: &C,
@@ -539,7 +540,9 @@ fn optimal_bezier(
 /// chord's length, a second when that chord does not hold), and where neither holds (a
 /// projection that would fold back near a sharp vertex) the verified chord of
 /// [`March::segment`], shortened until its bound holds. Each closed-form step is at least
-/// Wang's (|a × b| ≤ |B′| |b|), so the segments number at most Wang's count, checked before.
+/// Wang's (|a × b| ≤ |B′| |b|), so those segments number at most Wang's count, checked before
+/// the first point; the general steps (near a fold, a few) are counted against
+/// [`MAX_OPTIMAL_SEGMENTS`] as they are sent.
 fn march_parabola<S: FnMut(FlatPoint)>(
     march: &mut March<'_, S>,
     chords: &ParabolaChords,

@@ -777,6 +777,22 @@ mod tests {
         }
     }
 
+    /// The tolerance `rel` × the curve's size (at least 1e-3 of it) and the measured Hausdorff
+    /// distance over it, with the given sampling.
+    fn relative_error(
+        c: &BezierCurve<2>,
+        rel: f64,
+        curve_samples: usize,
+        segment_samples: usize,
+    ) -> (f64, f64) {
+        let tol = rel * crate::curve_size(c).max(1e-3);
+        let sampling = HausdorffSampling {
+            curve_samples,
+            segment_samples,
+        };
+        (tol, error_over_tol(c, tol, sampling))
+    }
+
     proptest! {
         #![proptest_config(ProptestConfig::with_cases(48))]
 
@@ -784,9 +800,7 @@ mod tests {
         /// Hausdorff distance stays within the tolerance.
         #[test]
         fn random_curves_are_within_tolerance(c in curve::<2>(1..=30, 10.0), rel in 1e-4f64..1e-1) {
-            let tol = rel * crate::curve_size(&c).max(1e-3);
-            let sampling = HausdorffSampling { curve_samples: 2001, segment_samples: 3 };
-            let e = error_over_tol(&c, tol, sampling);
+            let (_, e) = relative_error(&c, rel, 2001, 3);
             prop_assert!(e <= 1.0 + 1e-9, "{}", e);
         }
 
@@ -795,9 +809,7 @@ mod tests {
         /// than N* rounded up plus one (the greedy chords are N*'s own, the last one partial).
         #[test]
         fn quadratics_are_within_tolerance(c in curve::<2>(2..=2, 10.0), rel in 1e-5f64..1e-1) {
-            let tol = rel * crate::curve_size(&c).max(1e-3);
-            let sampling = HausdorffSampling { curve_samples: 4001, segment_samples: 5 };
-            let e = error_over_tol(&c, tol, sampling);
+            let (tol, e) = relative_error(&c, rel, 4001, 5);
             prop_assert!(e <= 1.0 + 1e-9, "{}", e);
             let p = c.points();
             let (a, b) = ((p[1] - p[0]) * 2.0, p[2] - p[1] * 2.0 + p[0]);

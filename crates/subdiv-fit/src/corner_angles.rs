@@ -23,7 +23,7 @@
 //! the feature scale that the data resolve as smooth keeps its turn unchecked. A known corner with
 //! tangents always counts.
 //!
-//! [`corner_rays`] are the rays `p_j ± λ t` that a corner's free neighbours are constrained to
+//! [`cone_rays`] are the rays `p_j ± λ t` that a corner's free neighbours are constrained to
 //! in [`Reduction::Refit`](crate::Reduction::Refit)'s least-squares refits (one unknown `λ` per
 //! side, see `on_rays`); [`neighbours_on_tangents`] moves a corner's neighbouring control points
 //! onto the tangent lines after each solve of the other modes (in least-squares mode the rest is
@@ -32,6 +32,15 @@
 //! corner whose turn is still off once the distance tolerance is met (a neighbour that is sharp or
 //! shared by two corners stays where the solve put it); [`corner_turns_kept`] is the check a
 //! reduction step calls.
+//!
+//! A smooth joint ([`Corner::smooth`], or a tangent joint with `Reduction::Refit`) is a sharp
+//! vertex whose turn is held at zero ([`SMOOTH_JOINT_TURN`]): in a refit, a side whose other side
+//! is final (fitted in an earlier span, or a straight edge to the next sharp vertex) is put on that
+//! side's direction exactly; where both sides move, both on the joint's tangent; where the other
+//! side is still to be fitted, within [`SMOOTH_SIDE`] of the tangent for an estimated one and on
+//! it for a given one. The other modes move both neighbours onto the tangent by any distance (the
+//! fitting loop then refines next to the joint until the distance holds), and insert no points for
+//! the turn.
 
 use bez_core::Vector;
 
@@ -74,18 +83,37 @@ pub(crate) const MODEL_FIT: f64 = 1e-4;
 /// A bend found as a corner at the feature scale but resolved by the data as smooth turns by less.
 pub(crate) const MIN_TURN: f64 = std::f64::consts::PI / 9.0;
 
-/// One bounded corner: its data index and the incoming and outgoing unit tangents there.
+/// The turn of the fit at a smooth joint ([`Corner::smooth`]): at most 10⁻⁹ rad,
+/// tangent-continuous but for rounding. A side fitted after the other is held on the other's
+/// direction exactly; this bound only lets the checks pass despite rounding.
+pub const SMOOTH_JOINT_TURN: f64 = 1e-9;
+
+/// How far a smooth joint's side may leave the joint's tangent while the other side is still
+/// open, when the tangent is the data's estimate (a tangent joint of [`fit_with_joints`]): 0.45°
+/// (in radians), a side's share of [`EXACT_CORNER_TOLERANCE`]. The other side then follows it
+/// exactly. A given tangent ([`Corner::smooth`]) is followed exactly.
+///
+/// [`fit_with_joints`]: crate::fit_with_joints
+pub(crate) const SMOOTH_SIDE: f64 = 0.5 * EXACT_CORNER_TOLERANCE;
+
+/// One bounded corner: its data index, the incoming and outgoing unit tangents there, the bound
+/// on its turn's error ([`FitOptions::corner_tolerance`], or [`SMOOTH_JOINT_TURN`] for a smooth
+/// joint) and whether it is a smooth joint.
 #[derive(Debug, Clone, Copy)]
 struct Bounded<const D: usize> {
     index: usize,
     incoming: Vector<D>,
     outgoing: Vector<D>,
+    bound: f64,
+    /// For a smooth joint, how far a side may leave the tangent while the other is open.
+    smooth: Option<f64>,
 }
 
-/// The corners whose turn [`FitOptions::corner_tolerance`] bounds, with their tangents: found
-/// once per fit (the sharp fitting points, which the tangent estimates depend on, stay the same
-/// through the insertion loop, the span fit and the reductions, which only add or remove regular
-/// points). Empty when the option is `None`.
+/// The corners whose turn [`FitOptions::corner_tolerance`] bounds and the smooth joints, with
+/// their tangents and bounds: found once per fit (the sharp fitting points, which the tangent
+/// estimates depend on, stay the same through the insertion loop, the span fit and the
+/// reductions, which only add or remove regular points). Only the smooth joints when the option
+/// is `None`.
 #[derive(Debug, Clone)]
 pub(crate) struct CornerTangents<const D: usize> {
     /// By increasing data index.
@@ -136,19 +164,26 @@ impl<const D: usize> CornerTangents<D> {
     }
 
     /// The interior sharp vertices of the fitting points (open data's ends are not corners) that
-    /// are `known` corners with tangents, with those, or else where the data's estimates turn by
-    /// at least [`MIN_TURN`] (or the corner angle), with the estimates. Empty unless
-    /// [`FitOptions::corner_tolerance`] is set.
+    /// are `known` smooth joints; with [`FitOptions::corner_tolerance`] set, also those that are
+    /// `known` corners with tangents, with those, or else where the data's estimates turn by at
+    /// least [`MIN_TURN`] (or the corner angle), with the estimates. A smooth joint's side may
+    /// leave its tangent by `smooth_side` while the other side is open (0 for a given tangent,
+    /// [`SMOOTH_SIDE`] for an estimate).
     pub(crate) fn new(
         data: &[Vector<D>],
         fitting: &[(usize, bool)],
         closed: bool,
         known: &[Corner<D>],
+        smooth_side: f64,
         options: &FitOptions,
     ) -> Self {
-        if options.corner_tolerance.is_none() {
+        let any_smooth = known.iter().any(Corner::is_smooth);
+        let Some(bound) = options
+            .corner_tolerance
+            .or(any_smooth.then_some(SMOOTH_JOINT_TURN))
+        else {
             return Self::none();
-        }
+        };
         let n = data.len();
         let k = fitting.len();
         let sigma = options.feature_scale * options.tolerance;
@@ -160,16 +195,23 @@ impl<const D: usize> CornerTangents<D> {
                 continue;
             }
             let c = fitting[j].0;
-            if let Some((incoming, outgoing)) = known
+            if let Some(((incoming, outgoing), smooth)) = known
                 .iter()
                 .filter(|g| g.index() == c)
-                .find_map(Corner::tangents)
+                .find_map(|g| Some((g.tangents()?, g.is_smooth())))
             {
-                list.push(Bounded {
-                    index: c,
-                    incoming,
-                    outgoing,
-                });
+                if smooth || options.corner_tolerance.is_some() {
+                    list.push(Bounded {
+                        index: c,
+                        incoming,
+                        outgoing,
+                        bound: if smooth { SMOOTH_JOINT_TURN } else { bound },
+                        smooth: smooth.then_some(smooth_side),
+                    });
+                }
+                continue;
+            }
+            if options.corner_tolerance.is_none() {
                 continue;
             }
             // Data points to the neighbouring sharp fitting points (or the data's ends).
@@ -194,11 +236,18 @@ impl<const D: usize> CornerTangents<D> {
                     index: c,
                     incoming,
                     outgoing,
+                    bound,
+                    smooth: None,
                 });
             }
         }
         list.sort_unstable_by_key(|b| b.index);
         Self { list }
+    }
+
+    /// Whether no corner is bounded.
+    pub(crate) fn is_empty(&self) -> bool {
+        self.list.is_empty()
     }
 
     /// The bounded corners among the sharp vertices of `fitting`: (vertex, corner), by vertex.
@@ -228,23 +277,8 @@ fn deviation<const D: usize>(curve: &SubdivCurve<D>, j: usize, corner: &Bounded<
     }
 }
 
-/// The rays of the neighbours of the corners of `curve` (fitting points `fitting`) for which
-/// `movable` holds: each side's neighbour on the corner's tangent there, unless it is sharp
-/// itself (the segment between two sharp vertices is a straight line) or the neighbour of two
-/// corners.
-pub(crate) fn corner_rays<const D: usize>(
-    corners: &CornerTangents<D>,
-    fitting: &[(usize, bool)],
-    curve: &SubdivCurve<D>,
-    movable: impl Fn(usize) -> bool,
-) -> Vec<Ray<D>> {
-    corner_sides(corners, fitting, curve, movable)
-        .into_iter()
-        .map(|side| side.ray)
-        .collect()
-}
-
-/// One side of a bounded corner that [`corner_rays`] constrains.
+/// One side of a bounded corner, with the ray `p_j ± λ t` along the corner's tangent there that its
+/// neighbour is constrained to.
 struct Side<'a, const D: usize> {
     ray: Ray<D>,
     /// The corner's vertex.
@@ -254,7 +288,9 @@ struct Side<'a, const D: usize> {
     bounded: &'a Bounded<D>,
 }
 
-/// The sides behind [`corner_rays`].
+/// The sides of the corners of `curve` (fitting points `fitting`) whose neighbour `movable` holds
+/// for: each side's neighbour on the corner's tangent there, unless it is sharp itself (the
+/// segment between two sharp vertices is a straight line) or the neighbour of two corners.
 fn corner_sides<'a, const D: usize>(
     corners: &'a CornerTangents<D>,
     fitting: &'a [(usize, bool)],
@@ -327,8 +363,8 @@ fn side_settled<const D: usize>(
         && settled(fitting[j].0, forwards)
 }
 
-/// The rays of [`corner_rays`] for the sides of the corners where the curve `fitted` (fitting points
-/// `fitting`) leaves the corner's tangent by more than the side's share of `bound` ([`allowance`];
+/// The rays of [`corner_sides`] for the sides of the corners where the curve `fitted` (fitting points
+/// `fitting`) leaves the corner's tangent by more than the side's share of its bound ([`allowance`];
 /// `settled` tells which sides outside the `movable` points are final), each turned from the
 /// tangent towards the curve's side by that share (capped below 90°): the boundary of the cone
 /// of directions within it that is nearest to the unconstrained fit (a side that points backwards
@@ -338,7 +374,6 @@ pub(crate) fn cone_rays<const D: usize>(
     corners: &CornerTangents<D>,
     fitting: &[(usize, bool)],
     fitted: &SubdivCurve<D>,
-    bound: f64,
     movable: impl Fn(usize) -> bool,
     settled: impl Fn(usize, bool) -> bool,
 ) -> Vec<Ray<D>> {
@@ -358,8 +393,25 @@ pub(crate) fn cone_rays<const D: usize>(
             &movable,
             &settled,
         );
-        let slack = allowance(bound, other, other_settled).min(1.5) * (1.0 - 1e-6);
         let mut ray = side.ray;
+        let slack = if let Some(share) = side.bounded.smooth {
+            // A smooth joint: on the other side's direction where that is final or a straight
+            // edge, on the tangent where both sides move, else within its share of the tangent.
+            let other_moves = side_line(fitted, side.corner, !side.forwards)
+                .is_some_and(|line| movable(line.vertex));
+            if other_settled || straight(fitted, side.corner, !side.forwards) {
+                if let Some(direction) = other_direction(fitted, side.corner, side.forwards) {
+                    ray.direction = direction;
+                }
+                0.0
+            } else if other_moves {
+                0.0
+            } else {
+                share * (1.0 - 1e-6)
+            }
+        } else {
+            allowance(side.bounded.bound, other, other_settled).min(1.5) * (1.0 - 1e-6)
+        };
         let edge = ray.constrained(fitted.points()) - ray.anchor;
         if angle_between(&edge, &ray.direction) <= slack {
             continue;
@@ -374,10 +426,31 @@ pub(crate) fn cone_rays<const D: usize>(
     rays
 }
 
+/// Whether the side of corner vertex `j` of `curve` after it (`forwards`) or before it is a
+/// straight edge to the next sharp vertex, which no refit of the corner's other side moves.
+fn straight<const D: usize>(curve: &SubdivCurve<D>, j: usize, forwards: bool) -> bool {
+    side_line(curve, j, forwards).is_some_and(|line| curve.is_sharp(line.vertex))
+}
+
+/// The direction, away from corner vertex `j` of `curve`, that continues the curve's side before
+/// the corner (`forwards`: the side after it is to follow) or after it (the side before is to
+/// follow, pointing backwards); `None` where that side has no tangent.
+fn other_direction<const D: usize>(
+    curve: &SubdivCurve<D>,
+    j: usize,
+    forwards: bool,
+) -> Option<Vector<D>> {
+    let (incoming, outgoing) = curve.corner_tangents(j)?;
+    let direction = if forwards { incoming? } else { -outgoing? };
+    let norm = direction.norm();
+    (norm > 0.0 && norm.is_finite()).then(|| direction / norm)
+}
+
 /// The control points of `curve` with the neighbours of its corners moved onto the corners'
 /// tangent lines there (orthogonal projection, kept ahead of the corner), and which were moved;
 /// `None` when none was. Only vertices for which `movable` holds move; a neighbour shared by two
-/// corners, or sharp itself, or one that would move by more than `max_move`, stays.
+/// corners, or sharp itself, or one that would move by more than `max_move` (unless its corner is
+/// a smooth joint), stays.
 pub(crate) fn neighbours_on_tangents<const D: usize>(
     corners: &CornerTangents<D>,
     fitting: &[(usize, bool)],
@@ -387,12 +460,15 @@ pub(crate) fn neighbours_on_tangents<const D: usize>(
 ) -> Option<(SubdivCurve<D>, Vec<bool>)> {
     let mut points = curve.points().to_vec();
     let mut moved = vec![false; points.len()];
-    for ray in corner_rays(corners, fitting, curve, movable) {
+    for side in corner_sides(corners, fitting, curve, movable) {
+        let ray = side.ray;
         let q = ray.constrained(&points);
         let along = (q - ray.anchor).dot(&ray.direction);
         let target = ray.anchor + ray.direction * along;
-        // The vertex moves by as much as the constrained point.
-        if along > 0.0 && (target - q).norm() <= max_move {
+        // The vertex moves by as much as the constrained point; a smooth joint's by any distance
+        // (the fitting loop then refines next to it until the distance holds too).
+        let within = side.bounded.smooth.is_some() || (target - q).norm() <= max_move;
+        if along > 0.0 && within {
             ray.place(&mut points, target);
             moved[ray.vertex] = true;
         }
@@ -407,23 +483,19 @@ pub(crate) fn neighbours_on_tangents<const D: usize>(
 /// The corner check of a reduction step: whether the trial curve `next` (fitting points `trial`)
 /// keeps every corner's turn within [`FitOptions::corner_tolerance`] of the corner's, or at least
 /// as close as the current curve `curve` (fitting points `fitting`, the same sharp vertices) has
-/// it. Always `true` when the option is `None`.
+/// it (a smooth joint within [`SMOOTH_JOINT_TURN`]). Always `true` without bounded corners.
 pub(crate) fn corner_turns_kept<const D: usize>(
     corners: &CornerTangents<D>,
     trial: &[(usize, bool)],
     next: &SubdivCurve<D>,
     fitting: &[(usize, bool)],
     curve: &SubdivCurve<D>,
-    options: &FitOptions,
 ) -> bool {
-    let Some(bound) = options.corner_tolerance else {
-        return true;
-    };
     corners
         .at(trial)
         .zip(corners.at(fitting))
         .all(|((t, c), (j, _))| {
-            deviation(next, t, c).turn <= bound.max(deviation(curve, j, c).turn)
+            deviation(next, t, c).turn <= c.bound.max(deviation(curve, j, c).turn)
         })
 }
 
@@ -432,33 +504,41 @@ pub(crate) fn corner_turns_kept<const D: usize>(
 /// between data indices `start` and `end` (the span's side of each) within their share of
 /// [`FitOptions::corner_tolerance`] ([`allowance`]: what the other side leaves where it is settled,
 /// as `settled` says by the corner's data index and side; else half), so that
-/// the two spans at a corner keep its turn within the bound. Always `true` when the option is
-/// `None`.
+/// the two spans at a corner keep its turn within the bound (a smooth joint's,
+/// [`SMOOTH_JOINT_TURN`]). Always `true` without bounded corners.
 pub(crate) fn span_sides_kept<const D: usize>(
     corners: &CornerTangents<D>,
     trial: &[(usize, bool)],
     next: &SubdivCurve<D>,
-    options: &FitOptions,
     n: usize,
     (start, end): (usize, usize),
     settled: impl Fn(usize, bool) -> bool,
 ) -> bool {
-    let Some(bound) = options.corner_tolerance else {
-        return true;
-    };
     let outside = |_: usize| false;
     corners.at(trial).all(|(j, c)| {
         if c.index != start % n && c.index != end % n {
             return true;
         }
         let d = deviation(next, j, c);
-        let share = |forwards: bool| {
-            let other = if forwards { d.incoming } else { d.outgoing };
+        let kept = |forwards: bool| {
+            let (this, other) = if forwards {
+                (d.outgoing, d.incoming)
+            } else {
+                (d.incoming, d.outgoing)
+            };
             let other_settled = side_settled(next, trial, j, !forwards, &outside, &settled);
-            allowance(bound, other, other_settled)
+            if let Some(side) = c.smooth {
+                // Along the other side where that is final or straight, else near the tangent.
+                if other_settled || straight(next, j, !forwards) {
+                    d.turn <= c.bound
+                } else {
+                    this <= side.max(c.bound)
+                }
+            } else {
+                this <= allowance(c.bound, other, other_settled)
+            }
         };
-        (c.index != start % n || d.outgoing <= share(true))
-            && (c.index != end % n || d.incoming <= share(false))
+        (c.index != start % n || kept(true)) && (c.index != end % n || kept(false))
     })
 }
 
@@ -466,21 +546,19 @@ pub(crate) fn span_sides_kept<const D: usize>(
 /// [`FitOptions::corner_tolerance`], a regular fitting point at the chord-length middle of the
 /// corner's segment on each side whose tangent is off by more than half of it (at least one side
 /// is: the turn's error is at most the sum of the sides'). Returns the number inserted: 0 when
-/// every corner is within the bound, the option is `None`, or the segments have no interior data.
+/// every corner is within its bound, none is bounded, or the segments have no interior data.
 pub(crate) fn corner_insertions<const D: usize>(
     corners: &CornerTangents<D>,
     chords: &ChordLengths,
     fitting: &mut Vec<(usize, bool)>,
     curve: &SubdivCurve<D>,
     n: usize,
-    options: &FitOptions,
 ) -> usize {
-    let Some(bound) = options.corner_tolerance else {
-        return 0;
-    };
     let k = fitting.len();
     let mut new = Vec::new();
-    for (j, corner) in corners.at(fitting) {
+    // A smooth joint's sides are placed on its tangent by the refits, not by inserted points.
+    for (j, corner) in corners.at(fitting).filter(|(_, c)| c.smooth.is_none()) {
+        let bound = corner.bound;
         let d = deviation(curve, j, corner);
         if d.turn <= bound {
             continue;

@@ -104,6 +104,21 @@ pub enum SubdivFitError {
         /// The curve of the round with the smallest error, and that error.
         best: Box<BestCurve>,
     },
+    /// The fit turns at a smooth joint ([`Corner::smooth`](crate::Corner::smooth), or a tangent
+    /// joint with [`Reduction::Refit`](crate::Reduction::Refit)) by more than
+    /// [`SMOOTH_JOINT_TURN`](crate::SMOOTH_JOINT_TURN): its refits could not hold the joint's two
+    /// sides on one tangent within the tolerance.
+    #[error(
+        "the fit turns by {turn:e} rad at the smooth joint at data index {index}, at most {max:e} accepted"
+    )]
+    SmoothJointNotKept {
+        /// The joint's data index.
+        index: usize,
+        /// The fit's turn there (radians; infinite where a side has no tangent).
+        turn: f64,
+        /// The largest turn accepted.
+        max: f64,
+    },
     /// A size the caller chose is above its limit.
     #[error("{name}: {requested} requested, at most {max} accepted")]
     TooLarge {

@@ -9,9 +9,11 @@ use crate::banded::CyclicBand;
 use crate::bspline::bspline_basis;
 use crate::chord::ChordLengths;
 use crate::corner::Corner;
-use crate::corner_angles::{CornerTangents, corner_insertions, neighbours_on_tangents};
+use crate::corner_angles::{
+    CornerTangents, SMOOTH_JOINT_TURN, SMOOTH_SIDE, corner_insertions, neighbours_on_tangents,
+};
 use crate::corners::detect_corners;
-use crate::curvature::feature_points;
+use crate::curvature::{angle_between, feature_points};
 use crate::curve::Closure;
 use crate::curved_corner::{Weights, neighbour_control, span_end};
 use crate::distance::PowerCubic;
@@ -217,13 +219,15 @@ pub struct FitOptions {
     /// the estimates' noise (`|κ⁺ − κ⁻| · reach ≥ 0.005`), by as much at half the reach (a smooth
     /// curve's estimates differ half as much there), and no point within the reach differs more.
     /// [`TANGENT_JUMP`] (0.5) suits outlines of lines and arcs. Default `None` (no detection);
-    /// a value must lie in (0, 1].
+    /// a value must lie in (0, 1]. With [`Reduction::Refit`] the joints are smooth joints (see
+    /// [`fit_with_joints`]).
     #[cfg_attr(feature = "serde", serde(default))]
     pub tangent_jump: Option<f64>,
     /// The kind of the fit's sharp vertices: [`VertexKind::Sharp`] (the default, the paper's:
     /// zero curvature on both sides of a corner) or [`VertexKind::SharpCurved`] (each side's first
     /// segment a parabola, so a curved side leaves the corner with its curvature, at no extra
-    /// control point). Not with tangent joints ([`fit_with_joints`], [`FitOptions::tangent_jump`]).
+    /// control point). Not with tangent joints ([`fit_with_joints`], [`FitOptions::tangent_jump`])
+    /// but with [`Reduction::Refit`], which makes them smooth joints.
     #[cfg_attr(feature = "serde", serde(default = "sharp_kind"))]
     pub corner_kind: VertexKind,
 }
@@ -403,13 +407,15 @@ pub struct RoundReport {
 #[non_exhaustive]
 pub struct Fit<const D: usize> {
     /// The fitted curve: one control point per fitting point, two per tangent joint (the
-    /// tangent vertex and its partner, which share the joint's knot).
+    /// tangent vertex and its partner, which share the joint's knot) but with
+    /// [`Reduction::Refit`] (a smooth joint: one sharp vertex).
     pub curve: SubdivCurve<D>,
     /// Data indices of the fitting points (the curve's knots), increasing; segment j covers data
     /// `fitting[j]..=fitting[j+1]` (wrapping for closed data).
     pub fitting: Vec<usize>,
     /// Data indices of the tangent joints, given ([`fit_with_joints`]) or detected
-    /// ([`FitOptions::tangent_jump`]): fitting points whose knot is double, increasing; empty
+    /// ([`FitOptions::tangent_jump`]): fitting points whose knot is double (with
+    /// [`Reduction::Refit`], smooth joints: sharp vertices with one tangent), increasing; empty
     /// without them.
     pub tangents: Vec<usize>,
     /// Data indices of the initial fitting points (round 0).
@@ -541,11 +547,15 @@ fn validate_options(o: &FitOptions) -> Result<(), SubdivFitError> {
             reason: "must be VertexKind::Sharp or VertexKind::SharpCurved",
         });
     }
-    if o.corner_kind == VertexKind::SharpCurved && o.tangent_jump.is_some() {
+    if o.corner_kind == VertexKind::SharpCurved
+        && o.tangent_jump.is_some()
+        && o.reduction != Reduction::Refit
+    {
         return Err(SubdivFitError::InvalidOption {
             name: "tangent_jump",
             value: o.tangent_jump.unwrap_or(f64::NAN),
-            reason: "cannot be combined with corner_kind = VertexKind::SharpCurved",
+            reason: "cannot be combined with corner_kind = VertexKind::SharpCurved (but with \
+                     Reduction::Refit)",
         });
     }
     for (name, value, ok, reason) in checks {
@@ -787,8 +797,20 @@ pub fn fit_with_known_corners<const D: usize>(
 /// [`FitOptions::corner_tolerance`] and no [`Reduction`] (the least-squares rows, the corner bound
 /// and the point removal do not know double knots yet): the curve of the last round is returned.
 ///
+/// With [`Reduction::Refit`] each tangent joint is instead a smooth joint ([`Corner::smooth`]): a
+/// sharp vertex on the joint's data point whose two sides the least-squares refits hold on one
+/// tangent (the data's, as above, within 0.45°; a side fitted after the other follows it exactly),
+/// so the curve is tangent-continuous there (its turn at most [`SMOOTH_JOINT_TURN`], checked) and,
+/// with [`VertexKind::SharpCurved`], each side keeps its own curvature. The reductions and the
+/// corner bound then apply as without joints, and the joints need no room. On lines meeting arcs
+/// at 10⁻² to 10⁻⁴ this takes 0.11–0.72 times the double knots' control points (the table
+/// `docs/results/subdiv-fit-joints.md` in the repository).
+///
 /// ```
-/// use subdiv_fit::{Closure, FitOptions, Joints, Vector2, VertexKind, fit_with_joints};
+/// use subdiv_fit::{
+///     Closure, FitOptions, Joints, Reduction, SMOOTH_JOINT_TURN, Vector2, VertexKind,
+///     fit_with_joints,
+/// };
 ///
 /// // A straight line into a quarter circle of radius 1, tangent at data point 40.
 /// let mut data: Vec<Vector2> = (0..40).map(|k| Vector2::new(-2.0 + k as f64 / 20.0, 0.0)).collect();
@@ -801,13 +823,25 @@ pub fn fit_with_known_corners<const D: usize>(
 /// assert_eq!(f.tangents, [40]);
 /// assert_eq!(f.curve.kinds().iter().filter(|&&k| k == VertexKind::Tangent).count(), 1);
 /// assert_eq!(f.curve.points().len(), f.fitting.len() + 1);
+///
+/// // With `Reduction::Refit`: a smooth joint, a sharp vertex with one tangent on both sides.
+/// let refit = FitOptions::new(1e-3)
+///     .with_reduction(Reduction::Refit)
+///     .with_corner_kind(VertexKind::SharpCurved);
+/// let g = fit_with_joints(&data, Closure::Open, &joints, &refit)?;
+/// assert_eq!(g.tangents, [40]);
+/// let j = g.fitting.binary_search(&40).unwrap();
+/// let (Some(a), Some(b)) = g.curve.corner_tangents(j).unwrap() else { unreachable!() };
+/// assert!(a.perp(&b).abs() <= SMOOTH_JOINT_TURN * a.norm() * b.norm());
 /// # Ok::<(), subdiv_fit::SubdivFitError>(())
 /// ```
 ///
 /// # Errors
 /// As [`fit_with_corners`], and [`SubdivFitError::InvalidTangentJoint`] for a tangent joint
-/// outside the data, at an end of open data, at a given corner, or without data for two fitting
-/// points between it and a corner or an end.
+/// outside the data, at an end of open data, at a given corner, or (without
+/// [`Reduction::Refit`]) without data for two fitting points between it and a corner or an end;
+/// [`SubdivFitError::SmoothJointNotKept`] when, with [`Reduction::Refit`], a joint's turn is
+/// above [`SMOOTH_JOINT_TURN`].
 pub fn fit_with_joints<const D: usize>(
     data: &[Vector<D>],
     closure: Closure,
@@ -827,7 +861,7 @@ fn fit_given<const D: usize>(
     tangents: &[usize],
     options: &FitOptions,
 ) -> Result<Fit<D>, SubdivFitError> {
-    match fit_checked(data, closure, corners, tangents, options) {
+    let fit = match fit_checked(data, closure, corners, tangents, options) {
         // The corners' bound moves control points: without it the distance alone may be met.
         Err(SubdivFitError::NoConvergence { .. }) if options.corner_tolerance.is_some() => {
             fit_checked(
@@ -839,7 +873,31 @@ fn fit_given<const D: usize>(
             )
         }
         result => result,
+    }?;
+    // The smooth joints: given, and with `Reduction::Refit` the tangent joints.
+    let refit = options.reduction == Reduction::Refit;
+    let smooth = corners
+        .iter()
+        .filter(|c| c.is_smooth())
+        .map(Corner::index)
+        .chain(fit.tangents.iter().copied().filter(|_| refit));
+    for index in smooth {
+        let turn = fit
+            .fitting
+            .binary_search(&index)
+            .ok()
+            .and_then(|j| fit.curve.corner_tangents(j))
+            .and_then(|(a, b)| Some(angle_between(&a?, &b?)))
+            .unwrap_or(f64::INFINITY);
+        if turn.is_nan() || turn > SMOOTH_JOINT_TURN {
+            return Err(SubdivFitError::SmoothJointNotKept {
+                index,
+                turn,
+                max: SMOOTH_JOINT_TURN,
+            });
+        }
     }
+    Ok(fit)
 }
 
 /// [`fit_given`] without the retry.
@@ -861,10 +919,21 @@ fn fit_checked<const D: usize>(
             points: n,
         });
     }
-    if options.corner_kind == VertexKind::SharpCurved && !tangents.is_empty() {
+    // `Reduction::Refit` places tangent joints as smooth joints (sharp vertices held on the
+    // tangent), the other reductions as tangent vertices (double knots).
+    let refit = options.reduction == Reduction::Refit;
+    if options.corner_kind == VertexKind::SharpCurved && !tangents.is_empty() && !refit {
         return Err(SubdivFitError::InvalidCornerKind {
             kind: options.corner_kind,
-            reason: "cannot be combined with tangent joints",
+            reason: "cannot be combined with tangent joints (but with Reduction::Refit)",
+        });
+    }
+    if let Some(c) = corners.iter().find(|c| c.is_smooth())
+        && !refit
+    {
+        return Err(SubdivFitError::InvalidTangentJoint {
+            index: c.index(),
+            reason: "a smooth joint needs Reduction::Refit",
         });
     }
     let indices: Vec<usize> = corners.iter().map(Corner::index).collect();
@@ -921,6 +990,34 @@ fn fit_checked<const D: usize>(
             )
         }
     };
+    // With `Reduction::Refit`, each tangent joint is a sharp fitting point with the data's tangent
+    // there, a smooth joint ([`Corner::smooth`]).
+    let joints_found = tangents.clone();
+    let with_smooth: Vec<Corner<D>>;
+    // The smooth joints' tangents are the data's estimates, followed within `SMOOTH_SIDE`.
+    let smooth_side = if refit && !tangents.is_empty() {
+        SMOOTH_SIDE
+    } else {
+        0.0
+    };
+    let corners = if refit && !tangents.is_empty() {
+        for &t in &tangents {
+            match fitting.binary_search_by_key(&t, |f| f.0) {
+                Ok(pos) => fitting[pos].1 = true,
+                Err(pos) => fitting.insert(pos, (t, true)),
+            }
+        }
+        let directions = joint_tangents(data, &fitting, &tangents, closed, sigma(options));
+        let mut all = corners.to_vec();
+        for (&t, &d) in tangents.iter().zip(&directions) {
+            all.push(Corner::smooth(t, d)?);
+        }
+        with_smooth = all;
+        tangents.clear();
+        &with_smooth[..]
+    } else {
+        corners
+    };
     let tangents = &tangents[..];
     // With tangent joints: interpolation, no corner bound, no reduction (see `fit_with_joints`).
     let options = &if tangents.is_empty() {
@@ -942,12 +1039,17 @@ fn fit_checked<const D: usize>(
     balance(&mut fitting, tangents, &chords, closed);
     let directions = joint_tangents(data, &fitting, tangents, closed, sigma(options));
     // The sharp fitting points stay, so the tangents of the bounded corners are found once.
-    let corner_tangents = CornerTangents::new(data, &fitting, closed, corners, options);
+    let corner_tangents =
+        CornerTangents::new(data, &fitting, closed, corners, smooth_side, options);
     let initial: Vec<usize> = fitting.iter().map(|f| f.0).collect();
     if options.reduction == Reduction::Refit
         && let Some(direct) = span_fit(data, &corner_tangents, &chords, &fitting, closed, options)
     {
-        return Ok(Fit { initial, ..direct });
+        return Ok(Fit {
+            initial,
+            tangents: joints_found,
+            ..direct
+        });
     }
     let mut reports = Vec::new();
     let mut best: Option<(SubdivCurve<D>, f64)> = None;
@@ -959,7 +1061,7 @@ fn fit_checked<const D: usize>(
     // The converged fit with its reductions, and the tangent joints it was given or found.
     let done = |state, reports| {
         Ok(Fit {
-            tangents: tangents.to_vec(),
+            tangents: joints_found.clone(),
             ..finish(
                 data,
                 &corner_tangents,
@@ -998,14 +1100,7 @@ fn fit_checked<const D: usize>(
             };
             let mut more = state.fitting.clone();
             if round < options.max_rounds
-                && corner_insertions(
-                    &corner_tangents,
-                    &chords,
-                    &mut more,
-                    &state.curve,
-                    n,
-                    options,
-                ) > 0
+                && corner_insertions(&corner_tangents, &chords, &mut more, &state.curve, n) > 0
             {
                 within = Some(state);
                 fitting = more;
@@ -1271,7 +1366,7 @@ pub(crate) fn solve_curve<const D: usize>(
     let points: Vec<Vector<D>> = p.into_iter().map(Vector::<D>::from).collect();
     let curve = SubdivCurve::new(points, kinds, Closure::from_closed(closed))?;
     match options.mode {
-        FitMode::Interpolate => Ok(if options.corner_tolerance.is_some() {
+        FitMode::Interpolate => Ok(if !corners.is_empty() {
             let max_move = 0.25 * options.tolerance;
             neighbours_on_tangents(corners, fitting, &curve, max_move, |_| true)
                 .map_or(curve, |c| c.0)
@@ -1291,7 +1386,7 @@ pub(crate) fn solve_curve<const D: usize>(
             }
             // A corner's tangents are the polygon edges to its neighbours: with the corner bound,
             // those move onto the data's tangents and the others are solved again around them.
-            if options.corner_tolerance.is_some()
+            if !corners.is_empty()
                 && let Some((on_tangents, moved)) =
                     neighbours_on_tangents(corners, fitting, &c, f64::INFINITY, |_| true)
                 && let Ok(next) = least_squares(data, fitting, &on_tangents, &moved)

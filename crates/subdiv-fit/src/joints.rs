@@ -12,7 +12,9 @@ use crate::chord::ChordLengths;
 ///   double knot: the curve is tangent-continuous there and its curvature may jump, as where a
 ///   straight side meets an arc tangentially. A tangent joint needs room: it must be an interior
 ///   point of open data, not a corner, and there must be data for two regular fitting points
-///   between it and the nearest corner or end on each side (the fit inserts them).
+///   between it and the nearest corner or end on each side (the fit inserts them). With
+///   [`Reduction::Refit`](crate::Reduction::Refit) they become smooth joints instead (sharp
+///   vertices held on one tangent, [`Corner::smooth`](crate::Corner::smooth)), which need no room.
 ///
 /// ```
 /// use subdiv_fit::Joints;

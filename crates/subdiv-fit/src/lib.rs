@@ -34,6 +34,7 @@
 //! | fewest control points | `.with_reduction(Reduction::Refit).with_corner_kind(VertexKind::SharpCurved)` | 0.96x, kept corners' turns unchecked |
 //! | fewest points with every corner's turn within 1° of the outline's | the same `.with_corner_tolerance(Some(EXACT_CORNER_TOLERANCE))` with `fit_bez_path` (feature `kurbo`) or [`fit_with_known_corners`] | 0.99x, every kept corner within 0.90°, about 1.3x the time of the row above |
 //! | the paper's configuration | [`FitOptions::paper`] | |
+//! | lines meeting arcs tangentially (the curvature jumps) | the joints given ([`fit_with_joints`]) or detected ([`FitOptions::tangent_jump`]) with `.with_reduction(Reduction::Refit).with_corner_kind(VertexKind::SharpCurved)`: smooth joints ([`Corner::smooth`]), G1 to [`SMOOTH_JOINT_TURN`] | (on lines meeting arcs: 0.11–0.72x the control points of the interpolating fit's double knots) |
 //!
 //! (`docs/papers/subdiv-fit.md` in the repository has the measured table.)
 //!
@@ -117,7 +118,7 @@ mod vertex;
 
 pub use crate::bspline::{bspline_basis, bspline_basis_d1, bspline_basis_d2, bspline_to_bezier};
 pub use crate::corner::Corner;
-pub use crate::corner_angles::{CORNER_TOLERANCE, EXACT_CORNER_TOLERANCE};
+pub use crate::corner_angles::{CORNER_TOLERANCE, EXACT_CORNER_TOLERANCE, SMOOTH_JOINT_TURN};
 pub use crate::corners::SCALE_RATIO;
 pub use crate::curvature::{FeaturePoint, discrete_curvature, feature_points, turning_angle};
 pub use crate::curve::{Closure, CurvePoint, SubdivCurve};

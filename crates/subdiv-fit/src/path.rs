@@ -7,8 +7,8 @@ use kurbo::{BezPath, Point};
 
 use crate::curvature::angle_between;
 use crate::{
-    Closure, Corner, Fit, FitOptions, Joints, MAX_FIT_POINTS, SubdivCurve, SubdivFitError,
-    fit_with_joints, fit_with_known_corners,
+    Closure, Corner, Fit, FitOptions, Joints, MAX_FIT_POINTS, Reduction, SubdivCurve,
+    SubdivFitError, fit_with_joints, fit_with_known_corners,
 };
 
 /// A joint of a path where the tangent turns by more than this (radians, 1°) is a corner.
@@ -34,6 +34,9 @@ pub struct SampledContour {
     /// increasing. Where they differ the joint is tangent-continuous with a curvature jump
     /// ([`SampledContour::tangent_joints`]).
     pub smooth_joints: Vec<(usize, f64, f64)>,
+    /// The path's unit tangent at each smooth joint (one per entry of `smooth_joints`: the mean
+    /// direction of the two segments that meet there).
+    pub smooth_tangents: Vec<Vector2>,
     /// A bound on the distance between the subpath and the polyline of its samples (each chord
     /// against its arc): `n(n − 1) max|Δ²P| / (8 m²)` for a segment of degree n with control
     /// points P sampled at m equal parameter steps, the largest over the segments.
@@ -51,6 +54,27 @@ impl SampledContour {
             .zip(&self.corner_tangents)
             .map(|(&i, &(a, b))| Corner::with_tangents(i, a, b).unwrap_or(Corner::new(i)))
             .collect()
+    }
+
+    /// The corners with their tangents ([`SampledContour::known_corners`]) and the tangent joints
+    /// of [`SampledContour::tangent_joints`] as smooth joints with the path's tangent there
+    /// ([`Corner::smooth`]), for [`fit_with_known_corners`] with
+    /// [`Reduction::Refit`](crate::Reduction::Refit), by increasing index.
+    #[must_use]
+    pub fn known_joints(&self, threshold: f64) -> Vec<Corner<2>> {
+        let mut known = self.known_corners();
+        for i in self.tangent_joints(threshold) {
+            let tangent = self
+                .smooth_joints
+                .iter()
+                .position(|j| j.0 == i)
+                .map(|at| self.smooth_tangents[at]);
+            if let Some(Ok(joint)) = tangent.map(|t| Corner::smooth(i, t)) {
+                known.push(joint);
+            }
+        }
+        known.sort_by_key(Corner::index);
+        known
     }
 
     /// The smooth joints whose one-sided curvatures differ by at least `threshold` times the
@@ -199,6 +223,7 @@ fn sample_subpath(sub: &[BezierCurve<2>], counts: &[usize]) -> SampledContour {
             corners: Vec::new(),
             corner_tangents: Vec::new(),
             smooth_joints: Vec::new(),
+            smooth_tangents: Vec::new(),
             chord_error: 0.0,
         };
     };
@@ -207,6 +232,7 @@ fn sample_subpath(sub: &[BezierCurve<2>], counts: &[usize]) -> SampledContour {
     let mut corners: Vec<usize> = Vec::new();
     let mut corner_tangents: Vec<(Vector2, Vector2)> = Vec::new();
     let mut smooth_joints: Vec<(usize, f64, f64)> = Vec::new();
+    let mut smooth_tangents: Vec<Vector2> = Vec::new();
     let mut chord_error = 0.0_f64;
     for (j, (c, &m)) in sub.iter().zip(counts).enumerate() {
         let steps = m as f64;
@@ -227,8 +253,10 @@ fn sample_subpath(sub: &[BezierCurve<2>], counts: &[usize]) -> SampledContour {
             && let (Ok(k_in), Ok(k_out)) = (prev.signed_curvature(1.0), c.signed_curvature(0.0))
             && (k_in.is_finite() && k_out.is_finite())
             && smooth_joints.last().is_none_or(|l| l.0 < points.len() - 1)
+            && let Some(tangent) = mean_direction(a, b)
         {
             smooth_joints.push((points.len() - 1, k_in, k_out));
+            smooth_tangents.push(tangent);
         }
         if let Some(prev) = joint
             && let (Some(a), Some(b)) = (end_tangent(prev), start_tangent(c))
@@ -266,8 +294,18 @@ fn sample_subpath(sub: &[BezierCurve<2>], counts: &[usize]) -> SampledContour {
         corners,
         corner_tangents,
         smooth_joints,
+        smooth_tangents,
         chord_error,
     }
+}
+
+/// The unit mean of the directions `a` and `b` (which turn by at most [`PATH_CORNER_ANGLE`]);
+/// `None` where it cannot be normalized.
+fn mean_direction(a: Vector2, b: Vector2) -> Option<Vector2> {
+    let (na, nb) = (a.norm(), b.norm());
+    let mean = a / na + b / nb;
+    let norm = mean.norm();
+    (norm > 0.0 && norm.is_finite()).then(|| mean / norm)
 }
 
 fn start_tangent(c: &BezierCurve<2>) -> Option<Vector2> {
@@ -333,6 +371,15 @@ pub fn fit_bez_path(
         let f = if joints.is_empty() {
             let known = contour.known_corners();
             fit_with_known_corners(&contour.points, contour.closure, &known, &only_given)?
+        } else if let (Some(threshold), Reduction::Refit) =
+            (options.tangent_jump, options.reduction)
+        {
+            // The joints as smooth joints on the path's own tangents.
+            let known = contour.known_joints(threshold);
+            Fit {
+                tangents: joints,
+                ..fit_with_known_corners(&contour.points, contour.closure, &known, &only_given)?
+            }
         } else {
             let given = Joints::new()
                 .with_corners(&contour.corners)

@@ -239,7 +239,7 @@ fn try_removal<const D: usize>(
             return None;
         }
     }
-    if !corner_turns_kept(corners, &trial, &next, fitting, curve, options) {
+    if !corner_turns_kept(corners, &trial, &next, fitting, curve) {
         return None;
     }
     let mut window: Vec<usize> = (0..segs2).filter(|&s| measured(s)).collect();
@@ -506,7 +506,7 @@ pub(crate) fn fit_spans<const D: usize>(
                 let next = respaced_refit(
                     data, corners, &trial, &fitting, &curve, options, inside, &settled,
                 )?;
-                if !span_sides_kept(corners, &trial, &next, options, n, span, settled) {
+                if !span_sides_kept(corners, &trial, &next, n, span, settled) {
                     return None;
                 }
                 let segs = next.segment_count();
@@ -616,7 +616,7 @@ fn try_trial<const D: usize>(
     } else {
         solve_curve(data, corners, trial, closed, options).ok()?
     };
-    if !corner_turns_kept(corners, trial, &next, fitting, curve, options) {
+    if !corner_turns_kept(corners, trial, &next, fitting, curve) {
         return None;
     }
     let (k, k2) = (fitting.len(), trial.len());
@@ -695,7 +695,8 @@ fn respaced_refit<const D: usize>(
 }
 
 /// The refit of the control points `free` of `guess` (fitting points `trial`) for
-/// [`Reduction::Refit`]; with [`FitOptions::corner_tolerance`] set, a free neighbour of a corner
+/// [`Reduction::Refit`]; with [`FitOptions::corner_tolerance`] set or smooth joints, a free
+/// neighbour of a corner
 /// whose side then leaves the corner's tangent by more than its share of the bound (the turn's
 /// error is at most the sum of the sides'; a side takes what a settled other side leaves, else
 /// half, `settled` naming the settled sides outside `free`) is constrained to the nearest edge of
@@ -710,19 +711,11 @@ fn refit_near_corners<const D: usize>(
     options: &FitOptions,
     settled: &impl Fn(usize, bool) -> bool,
 ) -> Option<SubdivCurve<D>> {
-    let Some(bound) = options.corner_tolerance else {
+    if options.corner_tolerance.is_none() && corners.is_empty() {
         return refit(data, trial, guess, free, &[], ITERATIONS, None);
-    };
-    let cone = |fitted: &SubdivCurve<D>| {
-        cone_rays(
-            corners,
-            trial,
-            fitted,
-            bound,
-            |v| free.contains(&v),
-            settled,
-        )
-    };
+    }
+    let cone =
+        |fitted: &SubdivCurve<D>| cone_rays(corners, trial, fitted, |v| free.contains(&v), settled);
     // One iteration more than without the bound: the first solve that leaves a side's share
     // fixes its ray, and the foot points follow the constrained curve once more.
     refit(data, trial, guess, free, &[], ITERATIONS + 1, Some(&cone))

@@ -15,9 +15,9 @@ use subdiv_fit::{
     BestCurve, CORNER_TOLERANCE, Closure, Corner, CurvePoint, EXACT_CORNER_TOLERANCE, ErrorMeasure,
     FeaturePoint, Fit, FitMode, FitOptions, Insertion, Joints, MAX_DATA_COORDINATE,
     MAX_FEATURE_SCALE, MAX_FIT_POINTS, MAX_REDUCED, MAX_ROUNDS, MAX_SAMPLES_PER_SEGMENT, Reduction,
-    RoundReport, SCALE_RATIO, Seeding, Segment, SubdivCurve, SubdivFitError, TANGENT_JUMP, Vector2,
-    Vector3, VertexKind, bspline_basis, bspline_basis_d1, bspline_basis_d2, bspline_to_bezier,
-    discrete_curvature, feature_points, fit, fit_with_corners, fit_with_joints,
+    RoundReport, SCALE_RATIO, SMOOTH_JOINT_TURN, Seeding, Segment, SubdivCurve, SubdivFitError,
+    TANGENT_JUMP, Vector2, Vector3, VertexKind, bspline_basis, bspline_basis_d1, bspline_basis_d2,
+    bspline_to_bezier, discrete_curvature, feature_points, fit, fit_with_corners, fit_with_joints,
     fit_with_known_corners, foot_point, point_polyline_distance, scaled_corners, svg_path,
     turning_angle,
 };
@@ -479,6 +479,20 @@ mod paths {
         // A line into a half circle: one smooth joint, curvature 0 in and 1 out.
         let hook = sample_svg_path("M-2 0 L0 0 A1 1 0 0 1 0 2", 0.05).unwrap();
         assert_eq!(hook[0].tangent_joints(TANGENT_JUMP), [40]);
+        // With the path's tangent there as a smooth joint, beside the open ends (no corners).
+        let joints = hook[0].known_joints(TANGENT_JUMP);
+        assert_eq!(joints.len(), 1);
+        assert!(joints[0].is_smooth() && joints[0].index() == 40);
+        assert_eq!(
+            joints[0].tangents(),
+            Some((Vector2::new(1.0, 0.0), Vector2::new(1.0, 0.0)))
+        );
+        assert!(
+            square[0]
+                .known_joints(TANGENT_JUMP)
+                .iter()
+                .all(|c| !c.is_smooth())
+        );
         let c = SubdivCurve::smooth(square[0].points.clone(), Closure::Closed).unwrap();
         assert_eq!(c.to_bez_path().unwrap().segments().count(), 16);
     }
@@ -519,6 +533,17 @@ fn corner_tangents_are_validated() {
         assert!((a - unit).norm() < 1e-15 && b == up, "{a:?}");
     }
     assert_eq!(Corner::<2>::new(3).tangents(), None);
+    assert!(!Corner::<2>::new(3).is_smooth());
+    // A smooth joint's tangent likewise.
+    for bad in [Vector2::new(0.0, 0.0), Vector2::new(f64::NAN, 1.0)] {
+        assert!(matches!(
+            Corner::smooth(5, bad),
+            Err(SubdivFitError::InvalidCornerTangent { index: 5, .. })
+        ));
+    }
+    let joint = Corner::smooth(6, Vector2::new(0.0, 1e-300)).unwrap();
+    assert!(joint.is_smooth() && joint.tangents() == Some((up, up)));
+    const { assert!(SMOOTH_JOINT_TURN > 0.0 && SMOOTH_JOINT_TURN < 1e-6) };
     let data: Vec<Vector2> = (0..40)
         .map(|k| Vector2::new(k as f64, (k as f64 * 0.3).sin()))
         .collect();
@@ -530,6 +555,19 @@ fn corner_tangents_are_validated() {
             points: 40
         })
     ));
+    // Smooth joints need `Reduction::Refit`, before any work.
+    let smooth = Corner::smooth(20, Vector2::new(1.0, 0.3)).unwrap();
+    for reduction in [
+        Reduction::Off,
+        Reduction::RemovePoints,
+        Reduction::RespaceAndRemove,
+    ] {
+        let o = FitOptions::new(1e-3).with_reduction(reduction);
+        assert!(matches!(
+            fit_with_known_corners(&data, Closure::Open, &[smooth], &o),
+            Err(SubdivFitError::InvalidTangentJoint { index: 20, .. })
+        ));
+    }
 }
 
 /// Sizes the caller chooses are refused before any work, quickly.
@@ -709,6 +747,17 @@ fn invariant_violating_json_is_refused() {
     assert!(read.index() == 4 && (a - a2).norm() < 1e-15 && (b - b2).norm() < 1e-15);
     let plain: Corner<2> = serde_json::from_str(r#"{"index":7}"#).unwrap();
     assert_eq!(plain, Corner::new(7));
+    // A smooth joint round-trips; one without a tangent, or with two, is refused.
+    let joint = Corner::smooth(9, Vector2::new(0.0, 2.0)).unwrap();
+    let read: Corner<2> = serde_json::from_str(&serde_json::to_string(&joint).unwrap()).unwrap();
+    assert_eq!(read, joint);
+    for bad in [
+        r#"{"index":1,"smooth":true}"#,
+        r#"{"index":1,"tangents":[[1,0],[0,1]],"smooth":true}"#,
+        r#"{"index":1,"tangents":[[0,0],[0,0]],"smooth":true}"#,
+    ] {
+        assert!(serde_json::from_str::<Corner<2>>(bad).is_err(), "{bad}");
+    }
 }
 
 bez_core::suite_completeness_tests!();

@@ -509,6 +509,51 @@ fn fit_bez_path_keeps_the_paths_corner_turns() {
     }
 }
 
+/// `fit_bez_path` with `tangent_jump` and `Reduction::Refit` takes the path's smooth joints where
+/// the curvature jumps as smooth joints on the path's tangents: a stadium (two lines, two half
+/// circles) fits with a sharp vertex at each of its four joints, tangent-continuous there to
+/// `SMOOTH_JOINT_TURN` along the path's direction, within the tolerance of the samples, with
+/// fewer control points than the fit without the joints.
+#[cfg(feature = "kurbo")]
+#[test]
+fn fit_bez_path_holds_the_paths_tangent_joints() {
+    let path =
+        kurbo::BezPath::from_svg("M-1 -1 L1 -1 A1 1 0 0 1 1 1 L-1 1 A1 1 0 0 1 -1 -1 Z").unwrap();
+    let tol = 1e-3;
+    let plain = FitOptions::new(tol)
+        .with_reduction(Reduction::Refit)
+        .with_corner_kind(VertexKind::SharpCurved);
+    let opts = plain.with_tangent_jump(Some(TANGENT_JUMP));
+    let (_, fits) = subdiv_fit::fit_bez_path(&path, &opts).unwrap();
+    let f = &fits[0];
+    assert_eq!(f.tangents.len(), 4);
+    let r = f.last().unwrap();
+    assert!(
+        r.max_data_to_curve <= tol && r.max_curve_to_data <= tol,
+        "{r:?}"
+    );
+    let p = f.curve.points();
+    for (at, direction) in [
+        ((-1.0, -1.0), (1.0, 0.0)),
+        ((1.0, -1.0), (1.0, 0.0)),
+        ((1.0, 1.0), (-1.0, 0.0)),
+        ((-1.0, 1.0), (-1.0, 0.0)),
+    ] {
+        let j = (0..p.len())
+            .find(|&j| f.curve.is_sharp(j) && (p[j].x() - at.0).hypot(p[j].y() - at.1) < 1e-9)
+            .unwrap();
+        let (a, b) = f.curve.corner_tangents(j).unwrap();
+        for side in [a.unwrap(), b.unwrap()] {
+            let u = side.normalize();
+            let off = (u.x() - direction.0).hypot(u.y() - direction.1);
+            assert!(off <= subdiv_fit::SMOOTH_JOINT_TURN, "{at:?}: {u:?}");
+        }
+    }
+    let (_, without) = subdiv_fit::fit_bez_path(&path, &plain).unwrap();
+    let (a, b) = (f.curve.points().len(), without[0].curve.points().len());
+    assert!(a < b, "{a} control points with the joints, {b} without");
+}
+
 /// `fit_bez_path` keeps the tolerance against the path itself, not only its samples: on an
 /// outline of tight quadratics at a coarse tolerance the fit's distance to dense points of the
 /// true path (and theirs to the fit), by kurbo's nearest points, stays within it, with either

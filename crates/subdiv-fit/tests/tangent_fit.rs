@@ -9,8 +9,9 @@
 use std::f64::consts::PI;
 
 use subdiv_fit::{
-    Closure, Fit, FitOptions, Joints, SubdivCurve, SubdivFitError, TANGENT_JUMP, Vector2,
-    VertexKind, fit, fit_with_joints, point_polyline_distance,
+    Closure, Corner, Fit, FitOptions, Joints, Reduction, SMOOTH_JOINT_TURN, SubdivCurve,
+    SubdivFitError, TANGENT_JUMP, Vector2, VertexKind, fit, fit_with_joints,
+    fit_with_known_corners, point_polyline_distance,
 };
 
 /// A piece of an exact outline: a line segment or a circular arc (centre, radius, start angle,
@@ -391,5 +392,131 @@ fn tangent_joints_are_detected_where_the_curvature_jumps() {
                 ..
             })
         ));
+    }
+}
+
+/// The turn of the fit at the sharp vertex on data index `index` and the one-sided curvatures
+/// there (before, after).
+fn smooth_joint_of(f: &Fit<2>, index: usize) -> (f64, f64, f64) {
+    let j = f.fitting.binary_search(&index).expect("a fitting point");
+    assert!(f.curve.is_sharp(j), "joint {index} is a sharp vertex");
+    let (a, b) = f.curve.corner_tangents(j).unwrap();
+    let (a, b) = (a.unwrap(), b.unwrap());
+    let turn = a.perp(&b).atan2(a.dot(&b)).abs();
+    let curvature =
+        |d: &subdiv_fit::CurvePoint<2>| d.first.perp(&d.second) / d.first.norm().powi(3);
+    let segs = f.curve.segment_count();
+    let before = f
+        .curve
+        .eval_segment_derivatives((j + segs - 1) % segs, 1.0)
+        .unwrap();
+    let after = f.curve.eval_segment_derivatives(j % segs, 0.0).unwrap();
+    (turn, curvature(&before), curvature(&after))
+}
+
+/// With `Reduction::Refit`, tangent joints are sharp vertices whose sides are held on one tangent
+/// (smooth joints): tangent-continuous to `SMOOTH_JOINT_TURN`, with curved corners each side keeps
+/// its own curvature (straight before a line-to-arc joint, bent after), within the tolerance of the
+/// exact outline, and with fewer control points than the interpolating fit with double knots.
+#[test]
+fn refit_holds_tangent_joints_as_smooth_joints_with_fewer_points() {
+    let cases = [
+        (rounded_corner(PI / 2.0), false, 1e-3),
+        (rounded_corner(PI / 2.0), false, 1e-4),
+        (rounded_corner(PI), false, 1e-3),
+        (stadium(), true, 1e-3),
+    ];
+    for (pieces, closed, tol) in cases {
+        let closure = if closed {
+            Closure::Closed
+        } else {
+            Closure::Open
+        };
+        let (data, starts) = sample(&pieces, 0.002, closed);
+        let joints_at = if closed { &starts[..] } else { &starts[1..] };
+        let joints = Joints::new().with_tangents(joints_at);
+        let double_knots = fit_with_joints(&data, closure, &joints, &FitOptions::new(tol)).unwrap();
+        for kind in [VertexKind::SharpCurved, VertexKind::Sharp] {
+            let options = FitOptions::new(tol)
+                .with_reduction(Reduction::Refit)
+                .with_corner_kind(kind);
+            let f = fit_with_joints(&data, closure, &joints, &options).unwrap();
+            assert_eq!(f.tangents, joints_at);
+            let error = error_to_outline(&f.curve, &pieces);
+            assert!(error <= tol, "{kind:?}, tol {tol}: error {error}");
+            for &index in joints_at {
+                let (turn, k0, k1) = smooth_joint_of(&f, index);
+                assert!(turn <= SMOOTH_JOINT_TURN, "turn {turn} at {index}");
+                // A sharp vertex is interpolated.
+                let j = f.fitting.binary_search(&index).unwrap();
+                assert!((f.curve.eval(j as f64).unwrap() - data[index]).norm() < 1e-12);
+                if kind == VertexKind::SharpCurved {
+                    // Lines meet arcs of radius 1 at every joint, in either order.
+                    let (line, arc) = if k0.abs() < k1.abs() {
+                        (k0, k1)
+                    } else {
+                        (k1, k0)
+                    };
+                    assert!(line.abs() < 0.05 && arc > 0.5, "curvatures {k0}, {k1}");
+                } else {
+                    assert!(k0.abs() < 1e-9 && k1.abs() < 1e-9, "curvatures {k0}, {k1}");
+                }
+            }
+            let (a, b) = (f.curve.points().len(), double_knots.curve.points().len());
+            if kind == VertexKind::SharpCurved {
+                assert!(
+                    a < b,
+                    "tol {tol}: {a} control points, {b} with double knots"
+                );
+            }
+        }
+    }
+}
+
+/// Smooth joints given with their exact tangents (`Corner::smooth`) are held on those tangents,
+/// and the fit through `fit_bez_path` with `tangent_jump` takes the path's own.
+#[test]
+fn smooth_joints_follow_given_tangents() {
+    let pieces = rounded_corner(PI / 2.0);
+    let (data, starts) = sample(&pieces, 0.002, false);
+    let tangents = [Vector2::new(1.0, 0.0), Vector2::new(0.0, 1.0)];
+    let known: Vec<Corner<2>> = starts[1..]
+        .iter()
+        .zip(tangents)
+        .map(|(&i, t)| Corner::smooth(i, t).unwrap())
+        .collect();
+    let options = FitOptions::new(1e-3)
+        .with_reduction(Reduction::Refit)
+        .with_corner_kind(VertexKind::SharpCurved);
+    let f = fit_with_known_corners(&data, Closure::Open, &known, &options).unwrap();
+    assert!(error_to_outline(&f.curve, &pieces) <= 1e-3);
+    for (&index, t) in starts[1..].iter().zip(tangents) {
+        let j = f.fitting.binary_search(&index).unwrap();
+        let (a, b) = f.curve.corner_tangents(j).unwrap();
+        for side in [a.unwrap(), b.unwrap()] {
+            assert!(
+                (side.normalize() - t).norm() < 1e-9,
+                "{side:?} against {t:?}"
+            );
+        }
+    }
+}
+
+/// A smooth joint that the fit cannot hold tangent-continuous is an error naming it: here its
+/// given tangent points back against the data, which no side can leave along.
+#[test]
+fn a_smooth_joint_that_cannot_be_held_is_an_error() {
+    let pieces = rounded_corner(PI / 2.0);
+    let (data, starts) = sample(&pieces, 0.002, false);
+    let joint = Corner::smooth(starts[1], Vector2::new(-1.0, 0.0)).unwrap();
+    let options = FitOptions::new(1e-3)
+        .with_reduction(Reduction::Refit)
+        .with_corner_kind(VertexKind::Sharp);
+    match fit_with_known_corners(&data, Closure::Open, &[joint], &options) {
+        Err(SubdivFitError::SmoothJointNotKept { index, turn, max }) => {
+            assert_eq!(index, starts[1]);
+            assert!(turn > max && max == SMOOTH_JOINT_TURN, "{turn}");
+        }
+        other => panic!("expected SmoothJointNotKept, got {other:?}"),
     }
 }

@@ -15,6 +15,7 @@ mod pde_bezier;
 pub(crate) mod pde_bezier_scale;
 mod subdiv_fit;
 mod subdiv_fit_glyphs;
+mod subdiv_fit_joints;
 mod subdiv_fit_kurbo;
 pub(crate) mod subdiv_fit_scipy;
 mod suites;

@@ -62,6 +62,7 @@ pub(crate) fn tables() -> Result<Vec<Table>, DynError> {
         super::subdiv_fit_kurbo::table()?,
         super::subdiv_fit_glyphs::table()?,
         density_table()?,
+        super::subdiv_fit_joints::table()?,
     ])
 }
 

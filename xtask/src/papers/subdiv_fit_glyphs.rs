@@ -75,7 +75,7 @@ fn proper_segments(path: &BezPath) -> BezPath {
 }
 
 /// The two-sided distance between a result and the true outline (one-point contours left out).
-fn outline_error(result: &BezPath, outline: &BezPath) -> f64 {
+pub(super) fn outline_error(result: &BezPath, outline: &BezPath) -> f64 {
     let outline = proper_segments(outline);
     let truth: Vec<PathSeg> = outline.segments().collect();
     let fitted: Vec<PathSeg> = result.segments().collect();

@@ -35,12 +35,11 @@
 //!
 //! A smooth joint ([`Corner::smooth`], or a tangent joint with `Reduction::Refit`) is a sharp
 //! vertex whose turn is held at zero ([`SMOOTH_JOINT_TURN`]): in a refit, a side whose other side
-//! is final (fitted in an earlier span, or a straight edge to the next sharp vertex) is put on that
-//! side's direction exactly; where both sides move, both on the joint's tangent; where the other
-//! side is still to be fitted, within [`SMOOTH_SIDE`] of the tangent for an estimated one and on
-//! it for a given one. The other modes move both neighbours onto the tangent by any distance (the
-//! fitting loop then refines next to the joint until the distance holds), and insert no points for
-//! the turn.
+//! is final (fitted in an earlier span) is put on that side's direction exactly, any other side on
+//! the joint's tangent (a straight edge between two sharp vertices, which no ray turns, is
+//! accepted within [`SMOOTH_SIDE`] of an estimated tangent). The other modes move both neighbours
+//! onto the tangent by any distance (the fitting loop then refines next to the joint until the
+//! distance holds), and insert no points for the turn.
 
 use bez_core::Vector;
 
@@ -88,10 +87,11 @@ pub(crate) const MIN_TURN: f64 = std::f64::consts::PI / 9.0;
 /// direction exactly; this bound only lets the checks pass despite rounding.
 pub const SMOOTH_JOINT_TURN: f64 = 1e-9;
 
-/// How far a smooth joint's side may leave the joint's tangent while the other side is still
-/// open, when the tangent is the data's estimate (a tangent joint of [`fit_with_joints`]): 0.45°
-/// (in radians), a side's share of [`EXACT_CORNER_TOLERANCE`]. The other side then follows it
-/// exactly. A given tangent ([`Corner::smooth`]) is followed exactly.
+/// How far a smooth joint's side that is a straight edge between two sharp vertices (which no ray
+/// turns) may leave the joint's tangent while the other side is still open, when the tangent is
+/// the data's estimate (a tangent joint of [`fit_with_joints`]): 0.45° (in radians), a side's
+/// share of [`EXACT_CORNER_TOLERANCE`]. The other side then follows it exactly. Every other side,
+/// and every side at a given tangent ([`Corner::smooth`]), is held on the tangent itself.
 ///
 /// [`fit_with_joints`]: crate::fit_with_joints
 pub(crate) const SMOOTH_SIDE: f64 = 0.5 * EXACT_CORNER_TOLERANCE;
@@ -394,21 +394,15 @@ pub(crate) fn cone_rays<const D: usize>(
             &settled,
         );
         let mut ray = side.ray;
-        let slack = if let Some(share) = side.bounded.smooth {
-            // A smooth joint: on the other side's direction where that is final or a straight
-            // edge, on the tangent where both sides move, else within its share of the tangent.
-            let other_moves = side_line(fitted, side.corner, !side.forwards)
-                .is_some_and(|line| movable(line.vertex));
-            if other_settled || straight(fitted, side.corner, !side.forwards) {
-                if let Some(direction) = other_direction(fitted, side.corner, side.forwards) {
-                    ray.direction = direction;
-                }
-                0.0
-            } else if other_moves {
-                0.0
-            } else {
-                share * (1.0 - 1e-6)
+        let slack = if side.bounded.smooth.is_some() {
+            // A smooth joint: on the other side's direction where that is final, else on the
+            // tangent.
+            if other_settled
+                && let Some(direction) = other_direction(fitted, side.corner, side.forwards)
+            {
+                ray.direction = direction;
             }
+            0.0
         } else {
             allowance(side.bounded.bound, other, other_settled).min(1.5) * (1.0 - 1e-6)
         };
@@ -427,7 +421,7 @@ pub(crate) fn cone_rays<const D: usize>(
 }
 
 /// Whether the side of corner vertex `j` of `curve` after it (`forwards`) or before it is a
-/// straight edge to the next sharp vertex, which no refit of the corner's other side moves.
+/// straight edge to the next sharp vertex, which no ray turns.
 fn straight<const D: usize>(curve: &SubdivCurve<D>, j: usize, forwards: bool) -> bool {
     side_line(curve, j, forwards).is_some_and(|line| curve.is_sharp(line.vertex))
 }
@@ -528,11 +522,14 @@ pub(crate) fn span_sides_kept<const D: usize>(
             };
             let other_settled = side_settled(next, trial, j, !forwards, &outside, &settled);
             if let Some(side) = c.smooth {
-                // Along the other side where that is final or straight, else near the tangent.
-                if other_settled || straight(next, j, !forwards) {
+                // Along the other side where that is final; else on the tangent, or near it for
+                // a straight edge to the next sharp vertex, which no ray turns.
+                if other_settled {
                     d.turn <= c.bound
-                } else {
+                } else if straight(next, j, forwards) {
                     this <= side.max(c.bound)
+                } else {
+                    this <= c.bound
                 }
             } else {
                 this <= allowance(c.bound, other, other_settled)

@@ -23,7 +23,7 @@ use crate::joints::{Joints, balance, make_room};
 use crate::reduction::{MAX_REDUCED, fit_spans, reduce, respace_spans};
 use crate::seeding::seed;
 use crate::tangent_joints::detect_tangent_joints;
-use crate::tangent_rows::{joint_tangents, solve_with_tangents};
+use crate::tangent_rows::{joint_tangents, smooth_joint_tangents, solve_with_tangents};
 use crate::tridiagonal::solve_tridiagonal;
 use crate::vertex::VertexKind;
 use crate::{SubdivCurve, SubdivFitError};
@@ -1007,7 +1007,7 @@ fn fit_checked<const D: usize>(
                 Err(pos) => fitting.insert(pos, (t, true)),
             }
         }
-        let directions = joint_tangents(data, &fitting, &tangents, closed, sigma(options));
+        let directions = smooth_joint_tangents(data, &fitting, &tangents, closed, sigma(options));
         let mut all = corners.to_vec();
         for (&t, &d) in tangents.iter().zip(&directions) {
             all.push(Corner::smooth(t, d)?);

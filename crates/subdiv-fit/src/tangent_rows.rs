@@ -88,6 +88,59 @@ pub(crate) fn joint_tangents<const D: usize>(
     closed: bool,
     sigma: f64,
 ) -> Vec<Vector<D>> {
+    each_joint(data, fitting, tangents, closed, sigma, |c, side| {
+        let n = data.len();
+        match (side(false, 1.0), side(true, 1.0)) {
+            (Some(a), Some(b)) => a + b,
+            _ => data[(c + 1) % n] - data[(c + n - 1) % n],
+        }
+    })
+}
+
+/// The data's unit tangent at each tangent joint held as a smooth joint: the one-sided estimate
+/// (as in [`joint_tangents`]) of the side whose estimate moves least between the full reach and a
+/// quarter of it. A straight side's does not move at all, so where a line meets an arc this is the
+/// line's own direction (the mean is off it by about 10⁻⁵ rad at 10⁻³, more than the straight
+/// side, fixed between two sharp vertices, can follow); the chord through the joint's neighbours
+/// where an estimate degenerates.
+pub(crate) fn smooth_joint_tangents<const D: usize>(
+    data: &[Vector<D>],
+    fitting: &[(usize, bool)],
+    tangents: &[usize],
+    closed: bool,
+    sigma: f64,
+) -> Vec<Vector<D>> {
+    each_joint(data, fitting, tangents, closed, sigma, |c, side| {
+        let n = data.len();
+        let stable = |forwards: bool| {
+            let (full, quarter) = (side(forwards, 1.0)?, side(forwards, 0.25)?);
+            Some((full, (full - quarter).norm()))
+        };
+        match (stable(false), stable(true)) {
+            (Some((a, da)), Some((b, db))) => {
+                if da <= db {
+                    a
+                } else {
+                    b
+                }
+            }
+            _ => data[(c + 1) % n] - data[(c + n - 1) % n],
+        }
+    })
+}
+
+/// `estimate(c, side)` normalized for each tangent joint `c`, where `side(forwards, scale)` is the
+/// data's one-sided tangent estimate leaving `c` forwards or backwards (reach `scale` times up to
+/// [`REACH_SCALES`] feature scales `sigma`, at most half-way to the neighbouring sharp or tangent
+/// fitting point, pointing along the data).
+fn each_joint<const D: usize>(
+    data: &[Vector<D>],
+    fitting: &[(usize, bool)],
+    tangents: &[usize],
+    closed: bool,
+    sigma: f64,
+    estimate: impl Fn(usize, &dyn Fn(bool, f64) -> Option<Vector<D>>) -> Vector<D>,
+) -> Vec<Vector<D>> {
     let n = data.len();
     // The joints (sharp or tangent fitting points) in data order; open data's ends are sharp.
     let bounds: Vec<usize> = fitting
@@ -110,19 +163,25 @@ pub(crate) fn joint_tangents<const D: usize>(
             };
             let gap = |a: usize, b: usize| if b > a { b - a } else { b + n - a };
             let (before, after) = (gap(prev, c), gap(c, next));
-            let reach = REACH_SCALES * sigma;
-            let side = |forwards: bool, gap: usize| {
-                data_tangent(data, closed, c, forwards, gap.div_ceil(2), reach, sigma)
+            let side = |forwards: bool, scale: f64| {
+                let gap = if forwards { after } else { before };
+                let reach = scale * REACH_SCALES * sigma;
+                data_tangent(
+                    data,
+                    closed,
+                    c,
+                    forwards,
+                    gap.div_ceil(2),
+                    reach,
+                    sigma.min(reach),
+                )
             };
-            let mean = match (side(false, before), side(true, after)) {
-                (Some(a), Some(b)) => a + b,
-                _ => data[(c + 1) % n] - data[(c + n - 1) % n],
-            };
-            let norm = mean.norm();
+            let direction = estimate(c, &side);
+            let norm = direction.norm();
             if norm > 0.0 && norm.is_finite() {
-                mean / norm
+                direction / norm
             } else {
-                mean
+                direction
             }
         })
         .collect()

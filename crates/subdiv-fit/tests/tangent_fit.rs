@@ -158,11 +158,16 @@ fn check_tangent_fit(f: &Fit<2>, data: &[Vector2], pieces: &[Piece], tol: f64) {
 /// A rounded corner: a line of length 2 meeting an arc of radius 1 tangentially (the curvature
 /// jumps from 0 to 1), sweeping `sweep` radians, and leaving it along a line of length 2.
 fn rounded_corner(sweep: f64) -> Vec<Piece> {
-    let end = Vector2::new(sweep.sin(), 1.0 - sweep.cos());
+    rounded_corner_of_radius(1.0, sweep)
+}
+
+/// [`rounded_corner`] with an arc of radius `r`.
+fn rounded_corner_of_radius(r: f64, sweep: f64) -> Vec<Piece> {
+    let end = Vector2::new(r * sweep.sin(), r * (1.0 - sweep.cos()));
     let direction = Vector2::new(sweep.cos(), sweep.sin());
     vec![
         Piece::Line(Vector2::new(-2.0, 0.0), Vector2::new(0.0, 0.0)),
-        Piece::Arc(Vector2::new(0.0, 1.0), 1.0, -PI / 2.0, sweep),
+        Piece::Arc(Vector2::new(0.0, r), r, -PI / 2.0, sweep),
         Piece::Line(end, end + direction * 2.0),
     ]
 }
@@ -518,5 +523,33 @@ fn a_smooth_joint_that_cannot_be_held_is_an_error() {
             assert!(turn > max && max == SMOOTH_JOINT_TURN, "{turn}");
         }
         other => panic!("expected SmoothJointNotKept, got {other:?}"),
+    }
+}
+
+proptest::proptest! {
+    #![proptest_config(proptest::prelude::ProptestConfig::with_cases(12))]
+
+    /// On rounded corners of any radius and sweep, `Reduction::Refit` with the two joints given
+    /// stays within the tolerance of the exact outline and holds both joints tangent-continuous.
+    #[test]
+    fn smooth_joints_hold_on_random_rounded_corners(
+        r in 0.3f64..3.0,
+        sweep in 0.3f64..3.0,
+        fine in proptest::bool::ANY,
+    ) {
+        let tol = if fine { 1e-3 } else { 1e-2 };
+        let pieces = rounded_corner_of_radius(r, sweep);
+        let (data, starts) = sample(&pieces, 0.004, false);
+        let joints = Joints::new().with_tangents(&starts[1..]);
+        let options = FitOptions::new(tol)
+            .with_reduction(Reduction::Refit)
+            .with_corner_kind(VertexKind::SharpCurved);
+        let f = fit_with_joints(&data, Closure::Open, &joints, &options).unwrap();
+        let error = error_to_outline(&f.curve, &pieces);
+        proptest::prop_assert!(error <= tol, "error {} > {}", error, tol);
+        for &index in &starts[1..] {
+            let (turn, _, _) = smooth_joint_of(&f, index);
+            proptest::prop_assert!(turn <= SMOOTH_JOINT_TURN, "turn {} at {}", turn, index);
+        }
     }
 }

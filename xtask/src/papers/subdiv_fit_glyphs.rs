@@ -27,13 +27,13 @@ const DATA: &str = include_str!("../../data/dejavu-sans-ascii.tsv");
 const UNITS_PER_EM: f64 = 2048.0;
 
 /// One glyph: code point, TrueType point count, outline in em.
-struct Glyph {
+pub(super) struct Glyph {
     code: u32,
     points: usize,
-    outline: BezPath,
+    pub(super) outline: BezPath,
 }
 
-fn glyphs() -> Result<Vec<Glyph>, DynError> {
+pub(super) fn glyphs() -> Result<Vec<Glyph>, DynError> {
     let mut out = Vec::new();
     for line in DATA.lines().filter(|l| !l.starts_with('#')) {
         let mut fields = line.split('\t');

@@ -799,7 +799,8 @@ pub fn fit_with_known_corners<const D: usize>(
 ///
 /// With [`Reduction::Refit`] each tangent joint is instead a smooth joint ([`Corner::smooth`]): a
 /// sharp vertex on the joint's data point whose two sides the least-squares refits hold on one
-/// tangent (the data's, as above, within 0.45°; a side fitted after the other follows it exactly),
+/// tangent (the one-sided estimate of the straighter side; a side fitted after the other follows
+/// it exactly, and a straight edge between two sharp vertices may stay within 0.45° of it),
 /// so the curve is tangent-continuous there (its turn at most [`SMOOTH_JOINT_TURN`], checked) and,
 /// with [`VertexKind::SharpCurved`], each side keeps its own curvature. The reductions and the
 /// corner bound then apply as without joints, and the joints need no room. On lines meeting arcs
@@ -994,7 +995,8 @@ fn fit_checked<const D: usize>(
     // there, a smooth joint ([`Corner::smooth`]).
     let joints_found = tangents.clone();
     let with_smooth: Vec<Corner<D>>;
-    // The smooth joints' tangents are the data's estimates, followed within `SMOOTH_SIDE`.
+    // The smooth joints' tangents are the data's estimates: a straight edge between two sharp
+    // vertices may stay within `SMOOTH_SIDE` of one.
     let smooth_side = if refit && !tangents.is_empty() {
         SMOOTH_SIDE
     } else {

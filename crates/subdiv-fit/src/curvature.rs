@@ -16,13 +16,22 @@ pub struct FeaturePoint {
 }
 
 /// Angle between the unit vectors `a/|a|` and `b/|b|`, accurate for small and large angles
-/// (`2 atan2(|â − b̂|, |â + b̂|)`).
+/// (`2 atan2(|â − b̂|, |â + b̂|)`); 0 when either is zero, NaN when either is not finite. Each is
+/// scaled by its largest coordinate before its length is taken, whose square would underflow
+/// below about 10⁻¹⁵⁴ (and then made a tiny direction look like none) or overflow above 10¹⁵⁴.
 pub(crate) fn angle_between<const D: usize>(a: &Vector<D>, b: &Vector<D>) -> f64 {
-    let (na, nb) = (a.norm(), b.norm());
-    if na == 0.0 || nb == 0.0 {
+    let unit = |v: &Vector<D>| {
+        let scaled = *v / v.amax();
+        scaled / scaled.norm()
+    };
+    let (ma, mb) = (a.amax(), b.amax());
+    if !(ma.is_finite() && mb.is_finite()) {
+        return f64::NAN;
+    }
+    if ma == 0.0 || mb == 0.0 {
         return 0.0;
     }
-    let (ua, ub) = (a / na, b / nb);
+    let (ua, ub) = (unit(a), unit(b));
     2.0 * (ua - ub).norm().atan2((ua + ub).norm())
 }
 
@@ -127,4 +136,36 @@ pub(crate) fn diagonal<const D: usize>(data: &[Vector<D>]) -> f64 {
         hi = hi.sup(p);
     }
     (hi - lo).norm()
+}
+
+#[cfg(test)]
+mod tests {
+    use bez_core::Vector2;
+
+    use super::angle_between;
+
+    /// The angle between two directions whatever their lengths: tiny vectors, whose squared
+    /// lengths underflow, and huge ones, whose squared lengths overflow, against the angle of the
+    /// same directions at unit scale.
+    #[test]
+    fn angles_of_tiny_and_huge_directions() {
+        let (a, b) = (Vector2::new(1.0, 0.0), Vector2::new(-0.6, 0.8));
+        let exact = 0.8f64.atan2(-0.6);
+        assert!((angle_between(&a, &b) - exact).abs() < 1e-15);
+        for (sa, sb) in [
+            (1e-200, 1.0),
+            (1e-300, 1e-305),
+            (1e200, 1e-200),
+            (1e300, 1e300),
+        ] {
+            let angle = angle_between(&(a * sa), &(b * sb));
+            assert!((angle - exact).abs() < 1e-15, "{sa:e}, {sb:e}: {angle}");
+        }
+        // Subnormal coordinates carry fewer bits.
+        let angle = angle_between(&a, &(b * 1e-310));
+        assert!((angle - exact).abs() < 1e-12, "{angle}");
+        assert_eq!(angle_between(&Vector2::new(0.0, 0.0), &b), 0.0);
+        assert!(angle_between(&Vector2::new(f64::INFINITY, 0.0), &b).is_nan());
+        assert!(angle_between(&a, &Vector2::new(f64::NAN, 1.0)).is_nan());
+    }
 }

@@ -190,7 +190,16 @@ fn check_fit(result: &Result<Fit<2>, SubdivFitError>, n: usize) -> Result<(), Te
             prop_assert!(curve_ok(&f.curve));
             prop_assert!(f.reports.iter().all(report_ok));
             prop_assert!(f.fitting.iter().all(|&i| i < n));
-            prop_assert_eq!(f.fitting.len() + f.tangents.len(), f.curve.points().len());
+            // A tangent vertex's partner is the one control point without a fitting point (a
+            // smooth joint is one sharp vertex).
+            let pairs = f
+                .curve
+                .kinds()
+                .iter()
+                .filter(|&&k| k == VertexKind::Tangent)
+                .count();
+            prop_assert_eq!(f.fitting.len() + pairs, f.curve.points().len());
+            prop_assert!(pairs == 0 || pairs == f.tangents.len());
             prop_assert!(
                 f.tangents
                     .iter()
@@ -358,10 +367,59 @@ proptest! {
         prop_assert!(joints.corners().windows(2).all(|w| w[0] < w[1]));
         prop_assert!(joints.tangents().windows(2).all(|w| w[0] < w[1]));
         check_fit(&fit_with_joints(&data, closure, &joints, &opts), n)?;
+        // Smooth joints (wild tangents, the invalid ones as plain corners), and the tangent
+        // joints as smooth joints, with `Reduction::Refit`.
+        let smooth: Vec<Corner<2>> = corners
+            .iter()
+            .zip(&tangents)
+            .map(|(&i, &(a, b, _, _))| {
+                Corner::smooth(i, Vector2::new(a, b)).unwrap_or(Corner::new(i))
+            })
+            .collect();
+        let refit = opts.with_reduction(Reduction::Refit);
+        check_fit(&fit_with_known_corners(&data, closure, &smooth, &refit), n)?;
+        check_fit(&fit_with_joints(&data, closure, &joints, &refit), n)?;
         if let Ok(found) = scaled_corners(&data, closure, &opts) {
             prop_assert!(found.windows(2).all(|w| w[0] < w[1]) && found.iter().all(|&i| i < n));
         }
         prop_assert!(start.elapsed() < Duration::from_secs(5), "{:?}", start.elapsed());
+    }
+
+    /// Smooth joints with valid options on plausible data, at any index and with any direction:
+    /// no panic, and an `Ok` is tangent-continuous at every joint (its turn measured here, beside
+    /// the fit's own check); otherwise a typed error.
+    #[test]
+    fn smooth_joints_hold_or_are_refused(
+        data in plausible_data(),
+        closed in any::<bool>(),
+        rel in 1e-3..1e-1f64,
+        curved in any::<bool>(),
+        joints in proptest::collection::vec((0usize..60, -std::f64::consts::PI..std::f64::consts::PI), 1..4),
+    ) {
+        let closure = Closure::from_closed(closed);
+        let n = data.len();
+        let size = data.iter().map(|p| p.norm()).fold(0.0, f64::max);
+        let kind = if curved { VertexKind::SharpCurved } else { VertexKind::Sharp };
+        let opts = FitOptions::new(rel * size.max(1e-300))
+            .with_reduction(Reduction::Refit)
+            .with_corner_kind(kind);
+        let known: Vec<Corner<2>> = joints
+            .iter()
+            .map(|&(i, a)| Corner::smooth(i % n, Vector2::new(a.cos(), a.sin())).unwrap())
+            .collect();
+        let result = fit_with_known_corners(&data, closure, &known, &opts);
+        check_fit(&result, n)?;
+        if let Ok(f) = &result {
+            for c in &known {
+                let Ok(j) = f.fitting.binary_search(&c.index()) else {
+                    continue;
+                };
+                if let Some((Some(a), Some(b))) = f.curve.corner_tangents(j) {
+                    let turn = a.perp(&b).abs().atan2(a.dot(&b));
+                    prop_assert!(turn <= SMOOTH_JOINT_TURN, "turn {} at {}", turn, c.index());
+                }
+            }
+        }
     }
 
     #[test]

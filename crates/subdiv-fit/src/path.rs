@@ -334,7 +334,9 @@ fn end_tangent(c: &BezierCurve<2>) -> Option<Vector2> {
 /// [`FitOptions::tangent_jump`] set, the tangent joints are the path's own smooth joints where the
 /// curvature jumps by the threshold ([`SampledContour::tangent_joints`], on the exact curvatures;
 /// none is detected on the samples), and the fit takes them with [`fit_with_joints`] (which
-/// interpolates without reduction, see there).
+/// interpolates without reduction, see there), or with [`Reduction::Refit`] as smooth joints on
+/// the path's own tangents ([`SampledContour::known_joints`], [`Corner::smooth`]); the fit's
+/// [`Fit::tangents`] lists them either way.
 ///
 /// ```
 /// use subdiv_fit::{FitOptions, fit_bez_path};

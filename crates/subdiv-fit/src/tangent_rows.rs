@@ -88,12 +88,8 @@ pub(crate) fn joint_tangents<const D: usize>(
     closed: bool,
     sigma: f64,
 ) -> Vec<Vector<D>> {
-    each_joint(data, fitting, tangents, closed, sigma, |c, side| {
-        let n = data.len();
-        match (side(false, 1.0), side(true, 1.0)) {
-            (Some(a), Some(b)) => a + b,
-            _ => data[(c + 1) % n] - data[(c + n - 1) % n],
-        }
+    each_joint(data, fitting, tangents, closed, sigma, |side| {
+        Some(side(false, 1.0)? + side(true, 1.0)?)
     })
 }
 
@@ -110,36 +106,28 @@ pub(crate) fn smooth_joint_tangents<const D: usize>(
     closed: bool,
     sigma: f64,
 ) -> Vec<Vector<D>> {
-    each_joint(data, fitting, tangents, closed, sigma, |c, side| {
-        let n = data.len();
+    each_joint(data, fitting, tangents, closed, sigma, |side| {
         let stable = |forwards: bool| {
             let (full, quarter) = (side(forwards, 1.0)?, side(forwards, 0.25)?);
             Some((full, (full - quarter).norm()))
         };
-        match (stable(false), stable(true)) {
-            (Some((a, da)), Some((b, db))) => {
-                if da <= db {
-                    a
-                } else {
-                    b
-                }
-            }
-            _ => data[(c + 1) % n] - data[(c + n - 1) % n],
-        }
+        let ((a, da), (b, db)) = (stable(false)?, stable(true)?);
+        Some(if da <= db { a } else { b })
     })
 }
 
-/// `estimate(c, side)` normalized for each tangent joint `c`, where `side(forwards, scale)` is the
+/// `estimate(side)` normalized for each tangent joint `c`, where `side(forwards, scale)` is the
 /// data's one-sided tangent estimate leaving `c` forwards or backwards (reach `scale` times up to
 /// [`REACH_SCALES`] feature scales `sigma`, at most half-way to the neighbouring sharp or tangent
-/// fitting point, pointing along the data).
+/// fitting point, pointing along the data); the chord through `c`'s neighbours where `estimate`
+/// has none.
 fn each_joint<const D: usize>(
     data: &[Vector<D>],
     fitting: &[(usize, bool)],
     tangents: &[usize],
     closed: bool,
     sigma: f64,
-    estimate: impl Fn(usize, &dyn Fn(bool, f64) -> Option<Vector<D>>) -> Vector<D>,
+    estimate: impl Fn(&dyn Fn(bool, f64) -> Option<Vector<D>>) -> Option<Vector<D>>,
 ) -> Vec<Vector<D>> {
     let n = data.len();
     // The joints (sharp or tangent fitting points) in data order; open data's ends are sharp.
@@ -176,7 +164,8 @@ fn each_joint<const D: usize>(
                     sigma.min(reach),
                 )
             };
-            let direction = estimate(c, &side);
+            let direction =
+                estimate(&side).unwrap_or_else(|| data[(c + 1) % n] - data[(c + n - 1) % n]);
             let norm = direction.norm();
             if norm > 0.0 && norm.is_finite() {
                 direction / norm

@@ -123,8 +123,10 @@ pub enum Reduction {
     /// removal tries only points whose two segments' errors sum to at most the tolerance. A span that needs more than six
     /// points beyond its initial count sends the contour through the insertion loop (in
     /// [`FitOptions::mode`]) and then the same re-spacing and removal. Otherwise round 0 of the
-    /// reports is the span fit. On the printable ASCII glyphs of DejaVu Sans at 10⁻³ em: 1,794
-    /// control points (TrueType stores 1,797) in about 0.9 ms per glyph (with `fit_bez_path`). With
+    /// reports is the span fit. On the printable ASCII glyphs of DejaVu Sans at 10⁻³ em: 1,793
+    /// control points (TrueType stores 1,797) in about 1 ms per glyph (with `fit_bez_path`, which
+    /// samples the outline's straight lines sparser between their corners for it,
+    /// `LineSampling::for_fit`). With
     /// [`FitOptions::corner_tolerance`] a free neighbour of a corner whose polygon edge leaves the
     /// corner's tangent by more than half the bound after a trial's refit is constrained to a ray
     /// at half the bound from the tangent (one unknown along it in the least-squares system) and

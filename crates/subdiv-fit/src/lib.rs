@@ -102,6 +102,8 @@ mod fit;
 mod insertion;
 mod joints;
 mod knots;
+#[cfg(feature = "kurbo")]
+mod line_samples;
 mod on_rays;
 #[cfg(feature = "kurbo")]
 mod path;
@@ -131,8 +133,11 @@ pub use crate::fit::{
 };
 pub use crate::joints::Joints;
 #[cfg(feature = "kurbo")]
+pub use crate::line_samples::{LINE_END_SAMPLES, LINE_MAX_STEP, LineSampling};
+#[cfg(feature = "kurbo")]
 pub use crate::path::{
-    JOINT_ROOM, PATH_CORNER_ANGLE, SampledContour, fit_bez_path, sample_bez_path, sample_svg_path,
+    JOINT_ROOM, PATH_CORNER_ANGLE, SampledContour, fit_bez_path, sample_bez_path,
+    sample_bez_path_with, sample_svg_path,
 };
 pub use crate::reduction::MAX_REDUCED;
 pub use crate::segment::Segment;

@@ -6,6 +6,7 @@ use bez_core::{BezierCurve, Vector2, bez_path_to_curves};
 use kurbo::{BezPath, Point};
 
 use crate::curvature::angle_between;
+use crate::line_samples::{LineSampling, line_parameters, line_sample_count};
 use crate::{
     Closure, Corner, Fit, FitOptions, Joints, MAX_FIT_POINTS, Reduction, SubdivCurve,
     SubdivFitError, fit_with_joints, fit_with_known_corners,
@@ -117,7 +118,7 @@ pub const JOINT_ROOM: usize = 6;
 /// Samples every subpath of `path` about every `spacing` (each segment at equal parameter steps,
 /// as many as its control polygon is long in spacings, and at least as many as keep its polyline
 /// within `spacing / 8` of it, see [`SampledContour::chord_error`]), keeping every segment's end
-/// points (so the corners are samples).
+/// points (so the corners are samples): [`sample_bez_path_with`] and [`LineSampling::Even`].
 ///
 /// ```
 /// use subdiv_fit::{Closure, sample_bez_path};
@@ -140,6 +141,35 @@ pub fn sample_bez_path(
     path: &BezPath,
     spacing: f64,
 ) -> Result<Vec<SampledContour>, SubdivFitError> {
+    sample_bez_path_with(path, spacing, LineSampling::Even)
+}
+
+/// [`sample_bez_path`] with the path's lines sampled as `lines` says ([`LineSampling::Graded`]:
+/// at `spacing` next to their ends, sparser in between; the curved segments as before).
+///
+/// ```
+/// use subdiv_fit::{LineSampling, sample_bez_path_with};
+///
+/// // A line 1,000 spacings long and back.
+/// let path = kurbo::BezPath::from_svg("M0 0 L1000 0 Z").unwrap();
+/// let even = sample_bez_path_with(&path, 1.0, LineSampling::Even)?;
+/// let graded = sample_bez_path_with(&path, 1.0, LineSampling::Graded)?;
+/// assert_eq!(even[0].points.len(), 2000);
+/// assert_eq!(even[0].corners, [0, 1000]);
+/// // Each way the start and 27 samples from each end: 16 a spacing apart, 6 steps doubling to
+/// // 64 spacings, 5 steps of 64.
+/// assert_eq!(graded[0].points.len(), 2 * (1 + 2 * 27));
+/// assert_eq!(graded[0].corners, [0, 55]);
+/// # Ok::<(), subdiv_fit::SubdivFitError>(())
+/// ```
+///
+/// # Errors
+/// As [`sample_bez_path`].
+pub fn sample_bez_path_with(
+    path: &BezPath,
+    spacing: f64,
+    lines: LineSampling,
+) -> Result<Vec<SampledContour>, SubdivFitError> {
     if !(spacing.is_finite() && spacing > 0.0) {
         return Err(SubdivFitError::InvalidOption {
             name: "spacing",
@@ -150,11 +180,13 @@ pub fn sample_bez_path(
     let subpaths = bez_path_to_curves(path)?;
     // Samples per segment, and their total, before any sample is made.
     let mut total = 0.0_f64;
-    let counts: Vec<Vec<usize>> = subpaths
+    let counts: Vec<Vec<(usize, bool)>> = subpaths
         .iter()
         .map(|sub| {
             sub.iter()
-                .map(|c| {
+                .enumerate()
+                .map(|(j, c)| {
+                    let graded = lines == LineSampling::Graded && line_between_corners(sub, j);
                     let len: f64 = c.points().windows(2).map(|w| (w[1] - w[0]).norm()).sum();
                     // The chord error n(n − 1) max|Δ²P| / (8 m²) at most spacing / 8.
                     let bend = second_difference_bound(c);
@@ -162,12 +194,19 @@ pub fn sample_bez_path(
                         .ceil()
                         .max((bend / spacing).sqrt().ceil())
                         .max(1.0);
-                    total += m;
-                    if m.is_finite() {
+                    // The segment's start and its samples inside.
+                    total += 1.0
+                        + if graded {
+                            line_sample_count(m)
+                        } else {
+                            m - 1.0
+                        };
+                    let m = if m.is_finite() {
                         m as usize
                     } else {
                         usize::MAX
-                    }
+                    };
+                    (m, graded)
                 })
                 .collect()
         })
@@ -215,7 +254,31 @@ fn second_difference_bound(c: &BezierCurve<2>) -> f64 {
     n * (n - 1.0) * d2
 }
 
-fn sample_subpath(sub: &[BezierCurve<2>], counts: &[usize]) -> SampledContour {
+/// Whether segment `j` of `sub` is a line with a corner (or an open end) at both ends: a line
+/// that meets a curve tangentially is sampled evenly, since a fit of the joint weighs the line's
+/// samples as the curve's.
+fn line_between_corners(sub: &[BezierCurve<2>], j: usize) -> bool {
+    let closed = sub.len() > 1 && sub.first().map(|c| c.start()) == sub.last().map(|c| c.end());
+    let corner = |a: &BezierCurve<2>, b: &BezierCurve<2>| {
+        matches!((end_tangent(a), start_tangent(b)),
+            (Some(u), Some(v)) if angle_between(&u, &v) > PATH_CORNER_ANGLE)
+    };
+    let before = match j.checked_sub(1) {
+        Some(i) => Some(&sub[i]),
+        None if closed => sub.last(),
+        None => None,
+    };
+    let after = match sub.get(j + 1) {
+        Some(next) => Some(next),
+        None if closed => sub.first(),
+        None => None,
+    };
+    let c = &sub[j];
+    c.degree() == 1 && before.is_none_or(|b| corner(b, c)) && after.is_none_or(|a| corner(c, a))
+}
+
+/// Samples one subpath, each segment with its `(steps, graded)` of `counts`.
+fn sample_subpath(sub: &[BezierCurve<2>], counts: &[(usize, bool)]) -> SampledContour {
     let (Some(first), Some(last)) = (sub.first(), sub.last()) else {
         return SampledContour {
             points: Vec::new(),
@@ -234,7 +297,7 @@ fn sample_subpath(sub: &[BezierCurve<2>], counts: &[usize]) -> SampledContour {
     let mut smooth_joints: Vec<(usize, f64, f64)> = Vec::new();
     let mut smooth_tangents: Vec<Vector2> = Vec::new();
     let mut chord_error = 0.0_f64;
-    for (j, (c, &m)) in sub.iter().zip(counts).enumerate() {
+    for (j, (c, &(m, graded))) in sub.iter().zip(counts).enumerate() {
         let steps = m as f64;
         chord_error = chord_error.max(second_difference_bound(c) / (8.0 * steps * steps));
         let joint = if j > 0 {
@@ -273,12 +336,17 @@ fn sample_subpath(sub: &[BezierCurve<2>], counts: &[usize]) -> SampledContour {
                 }
             }
         }
-        for k in 1..m {
-            if let Ok(p) = c.eval(k as f64 / m as f64)
+        let mut push = |t: f64| {
+            if let Ok(p) = c.eval(t)
                 && points.last() != Some(&p)
             {
                 points.push(p);
             }
+        };
+        if graded {
+            line_parameters(m).for_each(&mut push);
+        } else {
+            (1..m).for_each(|k| push(k as f64 / m as f64));
         }
     }
     if closed {
@@ -325,7 +393,9 @@ fn end_tangent(c: &BezierCurve<2>) -> Option<Vector2> {
 /// the fitted curves as one path of cubic Bézier segments, with the fits. Subpaths with fewer than
 /// 3 samples are left out. Each contour is fitted at the tolerance less its samples'
 /// [`SampledContour::chord_error`] (at most an eighth of it), so that the fit's two-sided error
-/// holds against the path, not only against its samples.
+/// holds against the path, not only against its samples. The path's lines are sampled as
+/// [`LineSampling::for_fit`] says: with [`Reduction::Refit`] those between corners at the spacing
+/// next to their ends and sparser between ([`LineSampling::Graded`]).
 ///
 /// The path states its tangent discontinuities exactly, so they are all its corners: no other
 /// corner is detected on its samples ([`FitOptions::sharp_angle`] is taken as 0), and a bend that is smooth in the path stays
@@ -359,7 +429,8 @@ pub fn fit_bez_path(
     let mut out = BezPath::new();
     let mut fits = Vec::new();
     let only_given = options.with_sharp_angle(0.0).with_tangent_jump(None);
-    for contour in sample_bez_path(path, options.tolerance)? {
+    let lines = LineSampling::for_fit(options);
+    for contour in sample_bez_path_with(path, options.tolerance, lines)? {
         if contour.points.len() < 3 {
             continue;
         }

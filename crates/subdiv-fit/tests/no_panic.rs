@@ -438,7 +438,8 @@ proptest! {
 mod paths {
     use super::*;
     use subdiv_fit::{
-        JOINT_ROOM, PATH_CORNER_ANGLE, SampledContour, TANGENT_JUMP, fit_bez_path, sample_bez_path,
+        JOINT_ROOM, LINE_END_SAMPLES, LINE_MAX_STEP, LineSampling, PATH_CORNER_ANGLE,
+        SampledContour, TANGENT_JUMP, fit_bez_path, sample_bez_path, sample_bez_path_with,
         sample_svg_path,
     };
 
@@ -482,9 +483,12 @@ mod paths {
                 }
             }
             if let Ok(c) = sample_bez_path(&path, spacing) { prop_assert!(sampled_ok(&c)); }
+            if let Ok(c) = sample_bez_path_with(&path, spacing, LineSampling::Graded) { prop_assert!(sampled_ok(&c)); }
             let start = Instant::now();
-            // With the path's tangent joints too (every smooth joint whose curvature jumps at all).
-            for opts in [FitOptions::new(tol), FitOptions::new(tol).with_tangent_jump(Some(1e-9))] {
+            // With the path's tangent joints too (every smooth joint whose curvature jumps at all),
+            // and with `Refit` (its lines sampled graded).
+            let refit = FitOptions::new(tol).with_reduction(Reduction::Refit);
+            for opts in [FitOptions::new(tol), FitOptions::new(tol).with_tangent_jump(Some(1e-9)), refit] {
             if let Ok((out, fits)) = fit_bez_path(&path, &opts) {
                 let path_ok = out.elements().iter().all(|e| match e {
                     kurbo::PathEl::MoveTo(p) | kurbo::PathEl::LineTo(p) => p.is_finite(),
@@ -512,6 +516,18 @@ mod paths {
             sample_svg_path("M 0 0 L 1e6 0", 1e-6),
             Err(SubdivFitError::TooLarge { .. })
         ));
+        // The size check counts the samples each way: 10⁸ evenly, about 1.6 · 10⁶ graded.
+        let long = kurbo::BezPath::from_svg("M 0 0 L 1e5 0").unwrap();
+        assert!(matches!(
+            sample_bez_path_with(&long, 1e-3, LineSampling::Even),
+            Err(SubdivFitError::TooLarge { .. })
+        ));
+        let graded = sample_bez_path_with(&long, 1e-3, LineSampling::Graded).unwrap();
+        assert!((graded[0].points.len() as f64 - 1e8 / 64.0).abs() < 100.0);
+        assert!(matches!(
+            sample_bez_path_with(&long, 1e-6, LineSampling::Graded),
+            Err(SubdivFitError::TooLarge { .. })
+        ));
         for spacing in [0.0, -1.0, f64::NAN, f64::INFINITY] {
             assert!(matches!(
                 sample_svg_path("M 0 0 L 1 0", spacing),
@@ -534,9 +550,24 @@ mod paths {
         );
         const { assert!(PATH_CORNER_ANGLE < 0.1) };
         const { assert!(JOINT_ROOM >= 4) };
+        // A tangent joint's room fits in the samples at the spacing next to a line's end.
+        const { assert!(LINE_END_SAMPLES >= JOINT_ROOM && LINE_MAX_STEP >= 2) };
         // A line into a half circle: one smooth joint, curvature 0 in and 1 out.
-        let hook = sample_svg_path("M-2 0 L0 0 A1 1 0 0 1 0 2", 0.05).unwrap();
+        let hook_path = kurbo::BezPath::from_svg("M-2 0 L0 0 A1 1 0 0 1 0 2").unwrap();
+        let hook = sample_bez_path(&hook_path, 0.05).unwrap();
         assert_eq!(hook[0].tangent_joints(TANGENT_JUMP), [40]);
+        // Its line meets the arc tangentially: sampled evenly when graded too; with a corner at
+        // the joint, graded (samples at 1, 2, …, 16 and 18 spacings from each end).
+        let graded = sample_bez_path_with(&hook_path, 0.05, LineSampling::Graded).unwrap();
+        assert_eq!(graded, hook);
+        let bent = kurbo::BezPath::from_svg("M-2 0 L0 0 A1 1 0 0 0 0 2").unwrap();
+        let bent = sample_bez_path_with(&bent, 0.05, LineSampling::Graded).unwrap();
+        assert_eq!(bent[0].corners, [35]);
+        // `fit_bez_path`'s choice: graded with `Refit` only.
+        let options = FitOptions::new(1e-3);
+        assert_eq!(LineSampling::for_fit(&options), LineSampling::Even);
+        let refit = options.with_reduction(Reduction::Refit);
+        assert_eq!(LineSampling::for_fit(&refit), LineSampling::Graded);
         // With the path's tangent there as a smooth joint, beside the open ends (no corners).
         let joints = hook[0].known_joints(TANGENT_JUMP);
         assert_eq!(joints.len(), 1);

@@ -255,7 +255,9 @@ fn subdiv_fit_totals(glyphs: &[Glyph], tol: f64, opts: &FitOptions) -> Result<To
     let mut t = Totals::default();
     for g in glyphs {
         let (path, fits) = fit_bez_path(&g.outline, opts)?;
-        let corners = subdiv_fit::sample_bez_path(&g.outline, tol)?;
+        // The samples the fit had, for the corners' indices.
+        let lines = subdiv_fit::LineSampling::for_fit(opts);
+        let corners = subdiv_fit::sample_bez_path_with(&g.outline, tol, lines)?;
         let outline_joints = joints(&g.outline);
         for (f, c) in fits.iter().zip(&corners) {
             for (j, &index) in f.fitting.iter().enumerate() {

@@ -62,31 +62,40 @@ fn offset(i: usize) -> f64 {
         .unwrap_or_else(|| HEAD[HEAD.len() - 1] + ((i + 1 - HEAD.len()) * LINE_MAX_STEP) as f64)
 }
 
-/// How many offsets are at most `h` (`Bound::Included`) or below it (`Bound::Excluded`).
-fn offsets_up_to(h: f64, bound: std::ops::Bound<()>) -> f64 {
-    let last = HEAD[HEAD.len() - 1];
-    let within = |p: f64| match bound {
-        std::ops::Bound::Excluded(()) => p < h,
-        _ => p <= h,
+/// The end of a straight segment that offsets are taken from. The samples are those of the
+/// start up to the middle h = m/2 inclusive and those of the end below it, so that a sample at
+/// the middle is taken once.
+#[derive(Clone, Copy)]
+enum End {
+    Start,
+    Finish,
+}
+
+/// How many offsets from `end` a segment with middle `h` (in spacings) takes: at most `h` from
+/// the start, below `h` from the finish (as a float, also for the size check of huge `h`).
+fn offsets_from(end: End, h: f64) -> f64 {
+    let within = |p: f64| match end {
+        End::Start => p <= h,
+        End::Finish => p < h,
     };
+    let last = HEAD[HEAD.len() - 1];
     if !within(last) {
         return HEAD.iter().filter(|&&p| within(p)).count() as f64;
     }
     let steps = (h - last) / LINE_MAX_STEP as f64;
-    let beyond = match bound {
-        std::ops::Bound::Excluded(()) => steps.ceil() - 1.0,
-        _ => steps.floor(),
+    let beyond = match end {
+        End::Start => steps.floor(),
+        End::Finish => steps.ceil() - 1.0,
     };
     HEAD.len() as f64 + beyond
 }
 
 /// The number of samples inside a straight segment `m` spacings long (as a float, for the size
-/// check before sampling): the offsets up to m/2 from its start and below m/2 from its end, so a
-/// segment of at most 2 [`LINE_END_SAMPLES`] + 1 spacings gets the m − 1 samples of equal steps.
+/// check before sampling); a segment of at most 2 [`LINE_END_SAMPLES`] + 1 spacings gets the
+/// m − 1 samples of equal steps.
 pub(crate) fn line_sample_count(m: f64) -> f64 {
     let h = m / 2.0;
-    offsets_up_to(h, std::ops::Bound::Included(()))
-        + offsets_up_to(h, std::ops::Bound::Excluded(()))
+    offsets_from(End::Start, h) + offsets_from(End::Finish, h)
 }
 
 /// The parameters in (0, 1), increasing, of the samples inside a straight segment `m` spacings
@@ -94,11 +103,14 @@ pub(crate) fn line_sample_count(m: f64) -> f64 {
 pub(crate) fn line_parameters(m: usize) -> impl Iterator<Item = f64> {
     let mf = m as f64;
     let h = mf / 2.0;
-    let from_start = offsets_up_to(h, std::ops::Bound::Included(())) as usize;
-    let from_end = offsets_up_to(h, std::ops::Bound::Excluded(())) as usize;
+    // Whole numbers below m / 2.
+    let (from_start, from_finish) = (
+        offsets_from(End::Start, h) as usize,
+        offsets_from(End::Finish, h) as usize,
+    );
     (0..from_start)
         .map(move |i| offset(i) / mf)
-        .chain((0..from_end).rev().map(move |i| (mf - offset(i)) / mf))
+        .chain((0..from_finish).rev().map(move |i| (mf - offset(i)) / mf))
 }
 
 #[cfg(test)]

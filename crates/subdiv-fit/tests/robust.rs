@@ -592,30 +592,42 @@ fn fit_bez_path_keeps_the_tolerance_against_the_path() {
             assert!(error <= tol, "{tol} {kind:?}: {error}");
             // The samples' polyline is within the chord-error bound of the path both ways (points
             // of the path to the polyline, chord midpoints to the path), and the bound within an
-            // eighth of the spacing.
-            let contour = &subdiv_fit::sample_bez_path(&path, tol).unwrap()[0];
-            let bound = contour.chord_error;
-            assert!(bound > 0.0 && bound <= tol / 8.0, "{bound}");
-            let samples = &contour.points;
-            // The closed polyline: the samples and the first again.
-            let closed: Vec<Vector2> = samples.iter().chain(&samples[..1]).copied().collect();
-            let to_polyline =
-                |p: kurbo::Point| point_polyline_distance(&Vector2::new(p.x, p.y), &closed);
-            for seg in &truth {
-                for k in 0..=256 {
-                    let d = to_polyline(seg.eval(f64::from(k) / 256.0));
+            // eighth of the spacing, with even samples and with the graded ones of `Refit` (the
+            // closing line has a corner at both ends: 90 spacings long at 10⁻², fewer samples; 30
+            // at 3·10⁻², up to 33 even steps).
+            let lines = subdiv_fit::LineSampling::for_fit(&opts);
+            assert_eq!(lines, subdiv_fit::LineSampling::Graded);
+            let even = &subdiv_fit::sample_bez_path(&path, tol).unwrap()[0];
+            let graded = &subdiv_fit::sample_bez_path_with(&path, tol, lines).unwrap()[0];
+            if tol < 2e-2 {
+                assert!(graded.points.len() < even.points.len());
+            } else {
+                assert_eq!(graded, even);
+            }
+            for contour in [even, graded] {
+                let bound = contour.chord_error;
+                assert!(bound > 0.0 && bound <= tol / 8.0, "{bound}");
+                let samples = &contour.points;
+                // The closed polyline: the samples and the first again.
+                let closed: Vec<Vector2> = samples.iter().chain(&samples[..1]).copied().collect();
+                let to_polyline =
+                    |p: kurbo::Point| point_polyline_distance(&Vector2::new(p.x, p.y), &closed);
+                for seg in &truth {
+                    for k in 0..=256 {
+                        let d = to_polyline(seg.eval(f64::from(k) / 256.0));
+                        assert!(d <= bound + 1e-12, "{tol}: {d} > {bound}");
+                    }
+                }
+                for (k, a) in samples.iter().enumerate() {
+                    let b = samples[(k + 1) % samples.len()];
+                    let mid = kurbo::Point::new(0.5 * (a.x() + b.x()), 0.5 * (a.y() + b.y()));
+                    let d = truth
+                        .iter()
+                        .map(|s| s.nearest(mid, 1e-12).distance_sq)
+                        .fold(f64::INFINITY, f64::min)
+                        .sqrt();
                     assert!(d <= bound + 1e-12, "{tol}: {d} > {bound}");
                 }
-            }
-            for (k, a) in samples.iter().enumerate() {
-                let b = samples[(k + 1) % samples.len()];
-                let mid = kurbo::Point::new(0.5 * (a.x() + b.x()), 0.5 * (a.y() + b.y()));
-                let d = truth
-                    .iter()
-                    .map(|s| s.nearest(mid, 1e-12).distance_sq)
-                    .fold(f64::INFINITY, f64::min)
-                    .sqrt();
-                assert!(d <= bound + 1e-12, "{tol}: {d} > {bound}");
             }
         }
     }

@@ -59,9 +59,12 @@ fn best_by(
 ) -> Result<Vec<f64>, DynError> {
     let mut calls = Vec::with_capacity(runs.len());
     for run in runs.iter_mut() {
-        let start = clock();
+        // The calls per round from one call's wall-clock time: a thread's CPU time may not
+        // advance over one short call (it is updated at scheduler events), which would ask for
+        // the most calls per round (a run of a few ms then took hours).
+        let start = Instant::now();
         run()?;
-        let once = clock() - start;
+        let once = start.elapsed().as_secs_f64() * 1e6;
         // Saturating float-to-integer conversion: at least one call, at most about 1e6.
         calls.push((round_micros / once.max(1e-3)).ceil().clamp(1.0, 1e6) as usize);
     }

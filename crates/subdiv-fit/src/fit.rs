@@ -124,9 +124,10 @@ pub enum Reduction {
     /// points beyond its initial count sends the contour through the insertion loop (in
     /// [`FitOptions::mode`]) and then the same re-spacing and removal. Otherwise round 0 of the
     /// reports is the span fit. On the printable ASCII glyphs of DejaVu Sans at 10⁻³ em: 1,793
-    /// control points (TrueType stores 1,797) in about 1 ms per glyph (with `fit_bez_path`, which
+    /// control points (TrueType stores 1,797) in about 0.7 ms per glyph (with `fit_bez_path`, which
     /// samples the outline's straight lines sparser between their corners for it,
-    /// `LineSampling::for_fit`). With
+    /// `LineSampling::for_fit`; a trial whose first solve is far off is given up before its later
+    /// iterations). With
     /// [`FitOptions::corner_tolerance`] a free neighbour of a corner whose polygon edge leaves the
     /// corner's tangent by more than half the bound after a trial's refit is constrained to a ray
     /// at half the bound from the tangent (one unknown along it in the least-squares system) and

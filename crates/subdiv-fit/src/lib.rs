@@ -30,9 +30,9 @@
 //!
 //! | goal | options | on the printable ASCII of DejaVu Sans at 10⁻³ em |
 //! |---|---|---|
-//! | fastest | [`FitOptions::new`] | 1.49x TrueType's points |
+//! | the default, fastest at coarse tolerances | [`FitOptions::new`] | 1.49x TrueType's points |
 //! | fewest control points | `.with_reduction(Reduction::Refit).with_corner_kind(VertexKind::SharpCurved)` | 0.96x, kept corners' turns unchecked |
-//! | fewest points with every corner's turn within 1° of the outline's | the same `.with_corner_tolerance(Some(EXACT_CORNER_TOLERANCE))` with `fit_bez_path` (feature `kurbo`) or [`fit_with_known_corners`] | 0.99x, every kept corner within 0.90°, about 1.3x the time of the row above |
+//! | fewest points with every corner's turn within 1° of the outline's | the same `.with_corner_tolerance(Some(EXACT_CORNER_TOLERANCE))` with `fit_bez_path` (feature `kurbo`) or [`fit_with_known_corners`] | 0.99x, every kept corner within 0.90°, under 1 ms per glyph (1.3–1.5x the time of the row above) |
 //! | the paper's configuration | [`FitOptions::paper`] | |
 //! | lines meeting arcs tangentially (the curvature jumps) | the joints given ([`fit_with_joints`]) or detected ([`FitOptions::tangent_jump`]) with `.with_reduction(Reduction::Refit).with_corner_kind(VertexKind::SharpCurved)`: smooth joints ([`Corner::smooth`]), G1 to [`SMOOTH_JOINT_TURN`] | (on lines meeting arcs: 0.11–0.72x the control points of the interpolating fit's double knots) |
 //!

@@ -21,7 +21,7 @@ use crate::chord::ChordLengths;
 use crate::corner_angles::{CornerTangents, cone_rays, corner_turns_kept, span_sides_kept};
 use crate::fit::{FitMode, FitOptions, Reduction, solve_curve};
 use crate::insertion::segment_range;
-use crate::refit::{ITERATIONS, refit};
+use crate::refit::{ABANDON_AT, Abandon, ITERATIONS, refit};
 use crate::vertex::VertexKind;
 
 /// `options` with interpolation (eq. (4)) as the mode: the start of [`Reduction::Refit`]'s
@@ -199,7 +199,20 @@ fn try_removal<const D: usize>(
             }
         }
         let guess = SubdivCurve::new(points, interp.kinds().to_vec(), curve.closure()).ok()?;
-        refit_near_corners(data, corners, &trial, guess, &free, options, &|_, _| true)?
+        // Given up after the first solve when the merged segment is far off.
+        let merged = (j + k2 - 1) % k2;
+        let abandon =
+            |c: &SubdivCurve<D>| subsample_exceeds(data, &trial, c, merged, ABANDON_AT * tol);
+        refit_near_corners(
+            data,
+            corners,
+            &trial,
+            guess,
+            &free,
+            options,
+            &|_, _| true,
+            Some(&abandon),
+        )?
     } else {
         solve_curve(data, corners, &trial, closed, options).ok()?
     };
@@ -503,19 +516,32 @@ pub(crate) fn fit_spans<const D: usize>(
                 if trial.len() < if closed { 3 } else { 2 } {
                     return None;
                 }
+                // The span's segments, given up after the first solve when one is far off.
+                let in_span = |s: usize| {
+                    let start = trial[s].0;
+                    start == span.0 % n || inside(start)
+                };
+                let abandon = |c: &SubdivCurve<D>| {
+                    (0..c.segment_count()).any(|s| {
+                        in_span(s) && subsample_exceeds(data, &trial, c, s, ABANDON_AT * tol)
+                    })
+                };
                 let next = respaced_refit(
-                    data, corners, &trial, &fitting, &curve, options, inside, &settled,
+                    data,
+                    corners,
+                    &trial,
+                    &fitting,
+                    &curve,
+                    options,
+                    inside,
+                    &settled,
+                    Some(&abandon),
                 )?;
                 if !span_sides_kept(corners, &trial, &next, n, span, settled) {
                     return None;
                 }
-                let segs = next.segment_count();
-                let span_segments: Vec<usize> = (0..segs)
-                    .filter(|&s| {
-                        let start = trial[s].0;
-                        start == span.0 % n || inside(start)
-                    })
-                    .collect();
+                let span_segments: Vec<usize> =
+                    (0..next.segment_count()).filter(|&s| in_span(s)).collect();
                 // A subsample of every segment first: most failing trials fail there.
                 if span_segments
                     .iter()
@@ -612,6 +638,7 @@ fn try_trial<const D: usize>(
             options,
             inside,
             &|_, _| true,
+            None,
         )?
     } else {
         solve_curve(data, corners, trial, closed, options).ok()?
@@ -662,7 +689,7 @@ fn try_trial<const D: usize>(
 /// least squares; the others stay where `curve` (of `fitting`) has them.
 #[expect(
     clippy::too_many_arguments,
-    reason = "the data with their corners, the trial, the current state, the span and its settled corner sides"
+    reason = "the data with their corners, the trial, the current state, the span, its settled corner sides and when to give up"
 )]
 fn respaced_refit<const D: usize>(
     data: &[Vector<D>],
@@ -673,6 +700,7 @@ fn respaced_refit<const D: usize>(
     options: &FitOptions,
     inside: impl Fn(usize) -> bool,
     settled: &impl Fn(usize, bool) -> bool,
+    abandon: Option<Abandon<'_, D>>,
 ) -> Option<SubdivCurve<D>> {
     let closed = curve.is_closed();
     let interp = solve_curve(data, corners, trial, closed, &interpolating(options)).ok()?;
@@ -691,7 +719,9 @@ fn respaced_refit<const D: usize>(
         free.rotate_left(cut);
     }
     let guess = SubdivCurve::new(points, interp.kinds().to_vec(), curve.closure()).ok()?;
-    refit_near_corners(data, corners, trial, guess, &free, options, settled)
+    refit_near_corners(
+        data, corners, trial, guess, &free, options, settled, abandon,
+    )
 }
 
 /// The refit of the control points `free` of `guess` (fitting points `trial`) for
@@ -701,7 +731,12 @@ fn respaced_refit<const D: usize>(
 /// error is at most the sum of the sides'; a side takes what a settled other side leaves, else
 /// half, `settled` naming the settled sides outside `free`) is constrained to the nearest edge of
 /// the cone within that angle and the points are refitted once more, each constrained one
-/// optimal along its ray ([`cone_rays`]).
+/// optimal along its ray ([`cone_rays`]). `abandon` may give the trial up after the first solve
+/// ([`refit`]).
+#[expect(
+    clippy::too_many_arguments,
+    reason = "the data with their corners, the trial with its free points, the settled corner sides and when to give up"
+)]
 fn refit_near_corners<const D: usize>(
     data: &[Vector<D>],
     corners: &CornerTangents<D>,
@@ -710,15 +745,25 @@ fn refit_near_corners<const D: usize>(
     free: &[usize],
     options: &FitOptions,
     settled: &impl Fn(usize, bool) -> bool,
+    abandon: Option<Abandon<'_, D>>,
 ) -> Option<SubdivCurve<D>> {
     if options.corner_tolerance.is_none() && corners.is_empty() {
-        return refit(data, trial, guess, free, &[], ITERATIONS, None);
+        return refit(data, trial, guess, free, &[], ITERATIONS, None, abandon);
     }
     let cone =
         |fitted: &SubdivCurve<D>| cone_rays(corners, trial, fitted, |v| free.contains(&v), settled);
     // One iteration more than without the bound: the first solve that leaves a side's share
     // fixes its ray, and the foot points follow the constrained curve once more.
-    refit(data, trial, guess, free, &[], ITERATIONS + 1, Some(&cone))
+    refit(
+        data,
+        trial,
+        guess,
+        free,
+        &[],
+        ITERATIONS + 1,
+        Some(&cone),
+        abandon,
+    )
 }
 
 #[cfg(test)]

@@ -332,21 +332,21 @@ mod tests {
     /// enters) are pulled back (the largest distance to the data shrinks; by about 30 % here: the
     /// foot-point iteration converges linearly, slowly along the tangent), and the segments they
     /// do not shape are left bit for bit.
+    /// The refit of `free` without rays, cone or give-up, in [`ITERATIONS`] iterations.
+    fn plain(
+        data: &[Vector2],
+        fitting: &[(usize, bool)],
+        guess: SubdivCurve<2>,
+        free: &[usize],
+    ) -> Option<SubdivCurve<2>> {
+        refit(data, fitting, guess, free, &[], ITERATIONS, None, None)
+    }
+
     #[test]
     fn refit_recovers_the_control_points_of_exact_data() {
         let (curve, data, fitting) = truth();
         let free = [2, 3, 5];
-        let same = refit(
-            &data,
-            &fitting,
-            curve.clone(),
-            &free,
-            &[],
-            ITERATIONS,
-            None,
-            None,
-        )
-        .unwrap();
+        let same = plain(&data, &fitting, curve.clone(), &free).unwrap();
         for v in 0..curve.points().len() {
             assert!((same.points()[v] - curve.points()[v]).norm() < 1e-9, "{v}");
         }
@@ -357,17 +357,7 @@ mod tests {
         let guess = SubdivCurve::new(points, curve.kinds().to_vec(), Closure::Open).unwrap();
         let shaped = shaped_segments(&guess, &free);
         assert_eq!(shaped, [0, 1, 2, 3, 4, 5, 6]);
-        let fitted = refit(
-            &data,
-            &fitting,
-            guess.clone(),
-            &free,
-            &[],
-            ITERATIONS,
-            None,
-            None,
-        )
-        .unwrap();
+        let fitted = plain(&data, &fitting, guess.clone(), &free).unwrap();
         let (before, after) = (
             max_distance(&guess, &data, &fitting),
             max_distance(&fitted, &data, &fitting),
@@ -430,32 +420,7 @@ mod tests {
     #[test]
     fn refit_rejects_sharp_points_and_keeps_the_guess_without_free_points() {
         let (curve, data, fitting) = truth();
-        assert!(
-            refit(
-                &data,
-                &fitting,
-                curve.clone(),
-                &[4],
-                &[],
-                ITERATIONS,
-                None,
-                None
-            )
-            .is_none()
-        );
-        assert_eq!(
-            refit(
-                &data,
-                &fitting,
-                curve.clone(),
-                &[],
-                &[],
-                ITERATIONS,
-                None,
-                None
-            )
-            .unwrap(),
-            curve
-        );
+        assert!(plain(&data, &fitting, curve.clone(), &[4]).is_none());
+        assert_eq!(plain(&data, &fitting, curve.clone(), &[]).unwrap(), curve);
     }
 }

@@ -55,6 +55,7 @@
     allow(unreachable_pub, reason = "re-exported with the paper feature only")
 )]
 mod bound;
+mod bump;
 #[cfg(feature = "paper")]
 pub mod cases;
 mod chord;

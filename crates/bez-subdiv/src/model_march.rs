@@ -25,6 +25,7 @@
 
 use bez_core::{HornerBernstein, Vector2, hodograph_slice};
 
+use crate::bump::bump_bound;
 use crate::cubic_model::{Model, ModelStream};
 use crate::error::SubdivError;
 use crate::guaranteed::FlatPoint;
@@ -253,14 +254,9 @@ const BUMP_SKEW: f64 = 1.0 / 64.0;
 /// With h = s1 − s0 and s = s0 + h x, K = c₀ + c₁ x + c₂ x² + c₃ x³ (c₀ = K(s0), c₁ = h K′(s0),
 /// c₂ = h² K″(s0) / 2, c₃ = h³ k₃), and K = (1 − x) K(s0) + x K(s1) + q(x) with the bump
 /// q(x) = −x(1 − x)(c₂ + c₃ + c₃ x) (it vanishes at both ends). With y = 2x − 1 ∈ [−1, 1],
-/// q = −¼ (1 − y²)(m + δ y), m = c₂ + 3c₃/2, δ = c₃/2.
-///
-/// Lemma: for |ε| ≤ 1 and y ∈ [−1, 1], 0 ≤ (1 − y²)(1 + εy) ≤ 1 + ε²/4. Proof:
-/// (1 − y²)(1 + εy) = 1 + φ(y), φ = εy − y² − εy³. Where εy ≤ 0, φ = εy(1 − y²) − y² ≤ 0;
-/// where εy > 0, −εy³ = −εy · y² ≤ 0, so φ ≤ εy − y² ≤ ε²/4 (the parabola's top at y = ε/2).
-/// With ε = δ/m (|δ| ≤ |m|, m ≠ 0): |q| ≤ ¼ |m| (1 + δ²/(4m²)) = (4m² + δ²) / (16 |m|).
-/// The maximum of |q| is at least |q(½)| = |m|/4, so the bound is within δ²/(4m²) ≤
-/// [`BUMP_SKEW`]/4 of it. Then |K| ≤ max(|K(s0)|, |K(s1)|) + |q|, returned as
+/// q = −¼ (1 − y²)(m + δ y), m = c₂ + 3c₃/2, δ = c₃/2, and |q| ≤ (4m² + δ²) / (16 |m|) by
+/// [`bump_bound`] (within [`BUMP_SKEW`]/4 of its maximum). Then
+/// |K| ≤ max(|K(s0)|, |K(s1)|) + |q|, returned as
 /// (16 |m| max(|K(s0)|, |K(s1)|) + 4m² + δ², 16 |m|). For a chord within one model K(s0) and
 /// K(s1) are the chord's ends' offsets, zero up to rounding, and the bound is the bump's.
 #[inline(always)]
@@ -272,15 +268,9 @@ fn offset_bound(k: [f64; 4], s0: f64, s1: f64) -> Option<(f64, f64)> {
     let c2 = h2 * (k[2] + 3.0 * s0 * k[3]);
     let c3 = h2 * h * k[3];
     let ends = c0.abs().max((c0 + c1 + c2 + c3).abs());
-    let (m, delta) = (c2 + 1.5 * c3, 0.5 * c3);
-    let (m2, delta2) = (m * m, delta * delta);
-    // Also false for NaN; a vanishing m (a straight piece) goes to the exact extremes.
-    if m2 > 0.0 && delta2 <= BUMP_SKEW * m2 {
-        let denominator = 16.0 * m.abs();
-        Some((denominator * ends + 4.0 * m2 + delta2, denominator))
-    } else {
-        None
-    }
+    // A vanishing m (a straight piece) goes to the exact extremes.
+    bump_bound(c2 + 1.5 * c3, 0.5 * c3, BUMP_SKEW)
+        .map(|(bump, denominator)| (denominator * ends + bump, denominator))
 }
 
 /// Whether k₀ + k₁ s + k₂ s² + k₃ s³ is non-decreasing on [s0, s1], by a sufficient test
@@ -600,29 +590,6 @@ mod tests {
                     "{} against {}", bound, exact
                 );
             }
-        }
-    }
-
-    /// The lemma behind `offset_bound`: (1 − y²)(1 + εy) ≤ 1 + ε²/4 on [−1, 1] for |ε| ≤ 1,
-    /// with equality approached (to O(ε⁴)) near y = ε/2, by dense sampling.
-    #[test]
-    fn bump_lemma() {
-        for i in 0..=200 {
-            let eps = -1.0 + f64::from(i) / 100.0;
-            let top = (0..=20_000)
-                .map(|j| {
-                    let y = -1.0 + f64::from(j) / 10_000.0;
-                    (1.0 - y * y) * (1.0 + eps * y)
-                })
-                .fold(f64::NEG_INFINITY, f64::max);
-            assert!(
-                top >= 0.0 && top <= 1.0 + eps * eps / 4.0 + 1e-15,
-                "{eps}: {top}"
-            );
-            assert!(
-                top >= 1.0 + eps * eps / 4.0 - eps.powi(4) / 4.0 - 1e-9,
-                "{eps}: {top}"
-            );
         }
     }
 

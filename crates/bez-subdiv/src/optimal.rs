@@ -855,6 +855,39 @@ mod tests {
             prop_assert!(e <= 1.0 + 1e-9, "{}", e);
         }
 
+        /// On random cubic arcs whose projection is monotone, at tolerances from 1e-9 to 0.2
+        /// (relative) above and below the exact offset (the roots, `cubic_offset`): the chord test accepts exactly
+        /// when the exact offset or the fallback h²/8 · max|B″| is within the tolerance (what
+        /// it accepted when it took the roots on every try its first bound did not settle),
+        /// and its value is never below the exact offset.
+        #[test]
+        fn bump_bound_decides_as_the_roots_did(
+            c in curve::<2>(3..=3, 10.0),
+            a in 0.0f64..1.0,
+            h in 1e-3f64..0.2,
+            gap in -9.0f64..-0.7,
+            above in any::<bool>(),
+        ) {
+            // Tolerances within 1e-9 to 0.2 (relative) of the exact offset, on both sides.
+            let ratio = if above { 1.0 + 10f64.powf(gap) } else { 1.0 - 10f64.powf(gap) };
+            let power = Power::new(c.points()).unwrap();
+            let third = 6.0 * power.c.norm();
+            let (ja, jb) = (power.jet(a), power.jet((a + h).min(1.0)));
+            let h = jb.t - ja.t;
+            let d = jb.point - ja.point;
+            let len = d.norm();
+            prop_assume!(h > 0.0 && len > 0.0);
+            prop_assume!(d.dot(&ja.d1).min(d.dot(&jb.d1)) >= h * h / 8.0 * third * len);
+            let (alpha, gamma) = (d.perp(&ja.d2), d.perp(&jb.d2));
+            let exact = h * h / 6.0 * cubic_offset(2.0 * alpha + gamma, gamma - alpha) / len;
+            prop_assume!(exact > 0.0);
+            let fallback = h * h / 8.0 * ja.d2.norm().max(jb.d2.norm());
+            let accept = exact * ratio;
+            let bound = chord_bound(&ja, &jb, third, power.c * 6.0, accept);
+            prop_assert!(bound >= exact.min(fallback) * (1.0 - 1e-12), "{} < {}", bound, exact);
+            prop_assert_eq!(bound <= accept, exact <= accept || fallback <= accept);
+        }
+
         /// Quadratics (the closed-form greedy march, or the general one for spikes) at
         /// tolerances 1e-5 to 1e-1 of their size: within the tolerance, and no more segments
         /// than N* rounded up plus one (the greedy chords are N*'s own, the last one partial).

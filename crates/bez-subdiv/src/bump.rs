@@ -29,6 +29,27 @@ pub(crate) fn bump_bound(m: f64, delta: f64, skew: f64) -> Option<(f64, f64)> {
     }
 }
 
+/// max over σ ∈ [0, 1] of |ψ(σ)|, ψ = σ(1 − σ)(A + Cσ): at the roots of
+/// ψ′ = A + 2(C − A)σ − 3Cσ² in [0, 1] (ψ vanishes at both ends). The roots are
+/// ((C − A) ± √(A² + AC + C²)) / (3C), taken in the cancellation-free pair q / (3C), −A / q.
+#[inline(always)]
+pub(crate) fn cubic_offset(a: f64, c: f64) -> f64 {
+    let psi = |s: f64| {
+        if (0.0..=1.0).contains(&s) {
+            (s * (1.0 - s) * (a + c * s)).abs()
+        } else {
+            0.0
+        }
+    };
+    let d = (a * a + a * c + c * c).max(0.0).sqrt();
+    let q = (c - a) + (c - a).signum() * d;
+    if q == 0.0 {
+        // C − A = 0 and A² + AC + C² = 0: A = C = 0.
+        return 0.0;
+    }
+    psi(q / (3.0 * c)).max(psi(-a / q))
+}
+
 #[cfg(test)]
 mod tests {
     #![allow(clippy::unwrap_used, reason = "tests fail loudly")]
@@ -97,6 +118,31 @@ mod tests {
             prop_assert!(bound >= exact - slack, "{} < {}", bound, exact);
             prop_assert!(bound <= exact * (1.0 + ratio * ratio / 4.0) + slack);
             prop_assert!(m.abs() / 4.0 <= exact + slack);
+        }
+    }
+
+    /// `cubic_offset` against a dense sampling of |σ(1 − σ)(A + Cσ)|.
+    #[test]
+    fn cubic_offset_is_the_maximum() {
+        for (a, c) in [
+            (3.0, 0.0),
+            (1.0, -2.0),
+            (-4.0, 9.0),
+            (0.0, 1.0),
+            (2.0, -2.0),
+            (0.0, 0.0),
+        ] {
+            let sampled = (0..=100_000)
+                .map(|k| {
+                    let s = f64::from(k) / 100_000.0;
+                    (s * (1.0 - s) * (a + c * s)).abs()
+                })
+                .fold(0.0, f64::max);
+            let exact = cubic_offset(a, c);
+            assert!(
+                exact >= sampled && exact <= sampled + 1e-9,
+                "{a} {c}: {exact} vs {sampled}"
+            );
         }
     }
 }

@@ -52,7 +52,7 @@ pub enum Method {
     /// ([`optimal_segment_count`](crate::optimal_segment_count)), each chord verified by a
     /// closed-form bound and shortened where it fails: close to N* segments (within 1.15 N* up
     /// to degree 3, 1.25 N* above), O(1) per point up to degree 3; above, each chord is
-    /// measured on cubic models of the curve with rigorous remainders, and the points are the
+    /// measured on quintic models of the curve with rigorous remainders, and the points are the
     /// models' points: within tol / 32 of B(t) (the first and last exact), the polyline still
     /// within tol of the curve; O(n) per model. No allocation up to degree
     /// [`MAX_STACK_DEGREE`](crate::MAX_STACK_DEGREE).

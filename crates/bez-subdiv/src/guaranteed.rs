@@ -13,7 +13,7 @@ pub struct FlatPoint {
     /// Parameter on the curve.
     pub t: f64,
     /// B(t); for [`Method::Optimal`](crate::Method::Optimal) above degree 3 a point of the
-    /// cubic models it flattens, within tol / 32 of B(t) (tol / 4 at tolerances near the rounding
+    /// quintic models it flattens, within tol / 32 of B(t) (tol / 4 at tolerances near the rounding
     /// floor; B(0) and B(1) exact).
     pub point: Vector2,
 }

@@ -59,7 +59,6 @@ mod bump;
 #[cfg(feature = "paper")]
 pub mod cases;
 mod chord;
-mod cubic_model;
 mod error;
 #[cfg_attr(
     not(feature = "paper"),
@@ -82,6 +81,7 @@ mod model_march;
 mod near_optimal;
 mod optimal;
 mod parabola;
+mod quintic_model;
 mod split_rule;
 mod stack_horner;
 #[cfg(test)]

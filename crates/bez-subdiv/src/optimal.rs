@@ -1,11 +1,11 @@
 //! Beyond the paper: near-optimal guaranteed flattening, placed by the curvature density
 //! √(|κ| / (8 tol)) and verified segment by segment with closed-form bounds (degree ≤ 3; most
 //! quadratics by the greedy march of [`parabola`](crate::parabola); above degree 3, the march on
-//! cubic models of [`model_march`](crate::model_march)).
+//! quintic models of [`model_march`](crate::model_march)).
 
 use bez_core::{BezierCurve, BezierForm, Vector2};
 
-use crate::bump::bump_bound;
+use crate::bump::{bump_bound, cubic_offset};
 use crate::error::SubdivError;
 use crate::guaranteed::FlatPoint;
 use crate::parabola::ParabolaChords;
@@ -186,27 +186,6 @@ fn overshoot(a: &Jet, d: &Vector2, len: f64, h: f64, jerk: Vector2) -> f64 {
     (-lo).max(hi - len)
 }
 
-/// max over σ ∈ [0, 1] of |ψ(σ)|, ψ = σ(1 − σ)(A + Cσ): at the roots of
-/// ψ′ = A + 2(C − A)σ − 3Cσ² in [0, 1] (ψ vanishes at both ends). The roots are
-/// ((C − A) ± √(A² + AC + C²)) / (3C), taken in the cancellation-free pair q / (3C), −A / q.
-#[inline(always)]
-fn cubic_offset(a: f64, c: f64) -> f64 {
-    let psi = |s: f64| {
-        if (0.0..=1.0).contains(&s) {
-            (s * (1.0 - s) * (a + c * s)).abs()
-        } else {
-            0.0
-        }
-    };
-    let d = (a * a + a * c + c * c).max(0.0).sqrt();
-    let q = (c - a) + (c - a).signum() * d;
-    if q == 0.0 {
-        // C − A = 0 and A² + AC + C² = 0: A = C = 0.
-        return 0.0;
-    }
-    psi(q / (3.0 * c)).max(psi(-a / q))
-}
-
 /// Where the march stands: the limits, the sink and the count.
 struct March<'a, S> {
     power: &'a Power,
@@ -314,7 +293,7 @@ impl<S: FnMut(FlatPoint)> March<'_, S> {
 
 /// 2^−`max_depth` (`max_depth` at most [`MAX_FLATTEN_DEPTH`](crate::MAX_FLATTEN_DEPTH), checked
 /// before): the exponent field alone, no call of `powi`.
-fn min_step(max_depth: usize) -> f64 {
+pub(crate) fn min_step(max_depth: usize) -> f64 {
     let depth = u64::try_from(max_depth.min(crate::MAX_FLATTEN_DEPTH)).unwrap_or(0);
     f64::from_bits((1023 - depth) << 52)
 }
@@ -641,7 +620,7 @@ mod tests {
     use crate::test_support::{assert_typed_errors, curve as fixed};
 
     /// The points, after checking order, exact end points and that they lie on the curve (up to
-    /// degree 3; above, within the cubic models' remainder, at most tol / 32).
+    /// degree 3; above, within the quintic models' remainder, at most tol / 32).
     fn points(c: &BezierCurve<2>, tol: f64) -> Vec<FlatPoint> {
         let mut pts = Vec::new();
         let n = flatten_optimal(c, tol, 40, |p| pts.push(p)).unwrap();
@@ -749,31 +728,6 @@ mod tests {
             1_048_576.0,
         ] {
             assert_eq!(ceil_small(x), x.ceil(), "{x}");
-        }
-    }
-
-    /// `cubic_offset` against a dense sampling of |σ(1 − σ)(A + Cσ)|.
-    #[test]
-    fn cubic_offset_is_the_maximum() {
-        for (a, c) in [
-            (3.0, 0.0),
-            (1.0, -2.0),
-            (-4.0, 9.0),
-            (0.0, 1.0),
-            (2.0, -2.0),
-            (0.0, 0.0),
-        ] {
-            let sampled = (0..=100_000)
-                .map(|k| {
-                    let s = f64::from(k) / 100_000.0;
-                    (s * (1.0 - s) * (a + c * s)).abs()
-                })
-                .fold(0.0, f64::max);
-            let exact = cubic_offset(a, c);
-            assert!(
-                exact >= sampled && exact <= sampled + 1e-9,
-                "{a} {c}: {exact} vs {sampled}"
-            );
         }
     }
 

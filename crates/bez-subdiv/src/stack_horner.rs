@@ -69,42 +69,53 @@ impl<'a> StackHorner<'a> {
         }
     }
 
-    /// B(t) and B′(t) for t in [0, 1] in one pass (for the cubic models of
-    /// [`cubic_model`](crate::cubic_model)): Horner's rule gives P(s) = Σ C(n, i) Pᵢ sⁱ and P′(s)
-    /// together, and with B = uⁿ P(s), u = 1 − t, s = t / u, ds/dt = 1 / u²,
-    /// B′(t) = u^(n−2) (P′(s) − n u P(s)) for t ≤ ½; above, with B = tⁿ Q(r), Q(r) =
-    /// Σ C(n, i) Pᵢ r^(n−i), r = u / t, B′(t) = t^(n−2) (n t Q(r) − Q′(r)). Both terms are at most
-    /// 2n times the largest control point, so the rounding of B′ is within about 8n² ulps of
-    /// it, as for Horner's rule on the hodograph.
+    /// B(t), B′(t) and B″(t) for t in [0, 1] in one pass (for the quintic models of
+    /// [`quintic_model`](crate::quintic_model)): Horner's rule gives P(s) = Σ C(n, i) Pᵢ sⁱ, P′(s)
+    /// and P″(s) together, and with B = uⁿ P(s), u = 1 − t, s = t / u, ds/dt = 1 / u²,
+    /// B′(t) = u^(n−2) (P′(s) − n u P(s)) and
+    /// B″(t) = u^(n−4) (P″(s) − 2(n − 1) u P′(s) + n(n − 1) u² P(s)) for t ≤ ½; above, the same
+    /// in r = u / t with t for u (B(t) = tⁿ Q(r), the reversed curve's expansion), B′ with the
+    /// opposite sign. The terms of B′ are at most 2n times the largest control point and those
+    /// of B″ 4n² times, so their rounding is within about 8n² and 32n³ ulps of it, as for
+    /// Horner's rule on the hodographs.
     #[inline]
-    pub(crate) fn jet(&self, t: f64) -> (Vector2, Vector2) {
+    pub(crate) fn jet2(&self, t: f64) -> (Vector2, Vector2, Vector2) {
         let q = self.scaled;
+        let z = Vector2::zeros();
         let Some((&last, rest)) = q.split_last() else {
-            return (Vector2::zeros(), Vector2::zeros());
+            return (z, z, z);
         };
         let n = rest.len();
         let degree = i32::try_from(n).unwrap_or(i32::MAX);
         let n = n as f64;
-        if t <= 0.5 {
+        let (flip, x, acc, slope, curl) = if t <= 0.5 {
             let u = 1.0 - t;
             let s = t / u;
-            let (mut acc, mut slope) = (last, Vector2::zeros());
+            let (mut acc, mut slope, mut curl) = (last, z, z);
             for &c in rest.iter().rev() {
+                curl = curl * s + slope;
                 slope = slope * s + acc;
                 acc = acc * s + c;
             }
-            let power = u.powi(degree - 2);
-            (acc * (power * u * u), (slope - acc * (n * u)) * power)
+            (1.0, u, acc, slope, curl)
         } else {
             let r = (1.0 - t) / t;
-            let (mut acc, mut slope) = (q[0], Vector2::zeros());
+            let (mut acc, mut slope, mut curl) = (q[0], z, z);
             for &c in &q[1..] {
+                curl = curl * r + slope;
                 slope = slope * r + acc;
                 acc = acc * r + c;
             }
-            let power = t.powi(degree - 2);
-            (acc * (power * t * t), (acc * (n * t) - slope) * power)
-        }
+            (-1.0, t, acc, slope, curl)
+        };
+        // Horner's `curl` is P″ / 2.
+        let power = x.powi(degree - 4);
+        let x2 = x * x;
+        (
+            acc * (power * x2 * x2),
+            (slope - acc * (n * x)) * (flip * power * x2),
+            (curl * 2.0 - slope * (2.0 * (n - 1.0) * x) + acc * (n * (n - 1.0) * x2)) * power,
+        )
     }
 }
 
@@ -134,9 +145,10 @@ mod tests {
     }
 
     proptest! {
-        /// The point and the derivative in one pass: de Casteljau's point of the curve and of
-        /// its hodograph n ΔPᵢ (bez-core's `eval`, `hodograph_slice`), to 1e-12 of the control
-        /// points' size times n (the derivative's scale), from degree 2 to the buffer's.
+        /// The point and the first two derivatives in one pass: de Casteljau's point of the
+        /// curve and of its first and second hodographs (bez-core's `eval`, `hodograph_slice`),
+        /// to 1e-12 of the control points' size times n and n² (the derivatives' scales), from
+        /// degree 2 to the buffer's.
         #[test]
         fn jet_matches_de_casteljau(c in curve::<2>(2..=64, 10.0), t in 0.0..=1.0f64) {
             let mut buffer = [Vector2::zeros(); STACK_POINTS];
@@ -144,10 +156,13 @@ mod tests {
             let hodograph = BezierCurve::new(hodograph_slice(c.points())).unwrap();
             let scale = c.points().iter().map(Vector2::amax).fold(1.0, f64::max);
             let n = c.degree() as f64;
-            let (p, v) = h.jet(t);
+            let second = BezierCurve::new(hodograph_slice(hodograph.points())).unwrap();
+            let (p, v, a) = h.jet2(t);
             prop_assert!((p - c.eval(t).unwrap()).norm() <= 1e-12 * scale);
             let slope = hodograph.eval(t).unwrap();
             prop_assert!((v - slope).norm() <= 1e-12 * n * scale, "{:?} {:?}", v, slope);
+            let curl = second.eval(t).unwrap();
+            prop_assert!((a - curl).norm() <= 1e-12 * n * n * scale, "{:?} {:?}", a, curl);
         }
     }
 

@@ -1,7 +1,7 @@
 //! The near-optimal flattening (`Method::Optimal`) stays close to N* segments (N* the
 //! asymptotic lower bound) with a measured Hausdorff error ≤ tol, on the N* table's curves and
 //! on a wider seeded set: within 1.15 N* up to degree 3 and within 1.25 N* above (where each
-//! chord is measured on cubic models of the curve, with their remainders added).
+//! chord is measured on quintic models of the curve, with their remainders added).
 #![allow(
     clippy::unwrap_used,
     clippy::expect_used,
@@ -68,7 +68,7 @@ fn close_to_n_star_or_one_more_than_its_ceiling_on_degrees_2_to_30() {
     }
 }
 
-/// Above degree 3 (the march on cubic models), 40 seeded random curves per degree at
+/// Above degree 3 (the march on quintic models), 40 seeded random curves per degree at
 /// 1e-3 × size: median ≤ 1.10 N* and every curve ≤ 1.25 N* (measured medians 1.071–1.086,
 /// 90th percentiles 1.102–1.129, maxima 1.117–1.164).
 #[test]

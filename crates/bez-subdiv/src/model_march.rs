@@ -124,6 +124,8 @@ struct Window<'a, J> {
     front: usize,
     len: usize,
     done: bool,
+    /// The last chord start's parameter, its model's start and Q′ there.
+    start: (f64, f64, Vector2),
 }
 
 impl<J: Fn(f64) -> Jet2> Window<'_, J> {
@@ -141,6 +143,7 @@ impl<J: Fn(f64) -> Jet2> Window<'_, J> {
     }
 
     /// Drops the models that end at or before t.
+    #[inline(always)]
     fn drop_before(&mut self, t: f64) {
         while self.len > 1 && self.get(0).t1 <= t {
             self.front = (self.front + 1) % WINDOW;
@@ -148,8 +151,19 @@ impl<J: Fn(f64) -> Jet2> Window<'_, J> {
         }
     }
 
-    /// Takes models from the stream until they reach t, the window is full or the curve ends.
+    /// Takes models from the stream until they reach t, the window is full or the curve ends
+    /// (the check inline: on most tries there is nothing to take).
+    #[inline(always)]
     fn fill_to(&mut self, t: f64) -> Result<(), SubdivError> {
+        if self.done || self.len == WINDOW || (self.len > 0 && self.reach() >= t) {
+            return Ok(());
+        }
+        self.take_to(t)
+    }
+
+    /// The stream's part of [`Window::fill_to`].
+    #[inline(never)]
+    fn take_to(&mut self, t: f64) -> Result<(), SubdivError> {
         while !self.done && self.len < WINDOW && (self.len == 0 || self.reach() < t) {
             match self.stream.next_model()? {
                 Some(model) => {
@@ -164,11 +178,15 @@ impl<J: Fn(f64) -> Jet2> Window<'_, J> {
 
     /// The bound on the distance between the curve over [`ta`, `tb`] and the chord between
     /// its points there, and the models' point at `tb`; `pa` is the models' point at `ta` and
-    /// `accept` the tolerance (the chord bound of degree ≤ 3 stops early when it is met).
+    /// `accept` the tolerance (the bounds stop early when it is met).
     ///
-    /// Within one model: H, the cubic Hermite interpolant of the model at `ta` and `tb`, with
-    /// H″ at both ends and the constant H‴ from its power form (c₂ = (3Δ − h(2Q′(a) + Q′(b))) / h²,
-    /// c₃ = (h(Q′(a) + Q′(b)) − 2Δ) / h³, Δ = Q(b) − Q(a)), through [`chord_bound`]; plus ρ and r.
+    /// Within one model whose arc H projects monotonically onto the chord: [`hermite_chord`]
+    /// for the cubic Hermite interpolant H of the model Q at `ta` and `tb`, plus the model's
+    /// remainder r and Q − H = y²(k − y)² L(y) ([`Model::hermite_quotient`]): first with the
+    /// model's bound on |L|, and where that fails by its parts across and along the chord: every
+    /// arc point Q(t) is then within hypot(|u × (H − pa)| + across, along) of the chord (H's
+    /// projection lies in [0, |d|], Q's leaves it by at most `along`), and every chord point
+    /// within max |u × (Q − pa)| of the arc (Q's projection covers [0, |d|]).
     ///
     /// Across models: on each model's part [u, v] of [`ta`, `tb`], Hₖ(λ) = Qₖ(u) + λE₀ +
     /// λ²(3Δ − 2E₀ − E₁) + λ³(E₀ + E₁ − 2Δ) with E = (v − u) Q′ and Δ = Qₖ(v) − Qₖ(u); with
@@ -179,11 +197,22 @@ impl<J: Fn(f64) -> Jet2> Window<'_, J> {
     /// projection covers [0, |d|], so every chord point has an arc point at distance
     /// ≤ max |offset|. (The cubics are taken along d, |d| times these, and divided by |d| once.)
     /// Then add the largest ρₖ + rₖ.
-    fn bound(&self, ta: f64, pa: Vector2, tb: f64, accept: f64) -> (f64, Vector2) {
+    fn bound(&mut self, ta: f64, pa: Vector2, tb: f64, accept: f64) -> (f64, Vector2) {
         let mut k = 0;
         while k + 1 < self.len && self.get(k).t1 < tb {
             k += 1;
         }
+        let single = k == 0 || self.get(k - 1).t1 <= ta;
+        // Q′ at `ta` is the same for every try from it on the same model.
+        let da = if !single {
+            Vector2::zeros()
+        } else if self.start.0 == ta && self.start.1 == self.get(k).t0 {
+            self.start.2
+        } else {
+            let da = self.get(k).slope(ta);
+            self.start = (ta, self.get(k).t0, da);
+            da
+        };
         let last = self.get(k);
         let pb = last.point(tb);
         let d = pb - pa;
@@ -194,9 +223,9 @@ impl<J: Fn(f64) -> Jet2> Window<'_, J> {
         // underflows in the cubics' discriminants is below 1e-200 after the division by |d|.
         let len2 = d.dot(&d);
         let projected = len2 >= 1e-180;
-        if projected && (k == 0 || self.get(k - 1).t1 <= ta) {
+        if projected && single {
             let len = len2.sqrt();
-            let (da, db) = (last.slope(ta), last.slope(tb));
+            let db = last.slope(tb);
             let h = tb - ta;
             // |Q − H| ≤ k⁴/16 · |L| with the model's bound on |L| first (k = h / w).
             let k = h * last.inverse_span;
@@ -391,12 +420,13 @@ fn march<J: Fn(f64) -> Jet2>(
         front: 0,
         len: 0,
         done: false,
+        start: (f64::NAN, f64::NAN, Vector2::zeros()),
     };
     window.fill_to(0.0)?;
     let (mut ta, mut pa) = (0.0_f64, p[0]);
     let mut step = first_step(window.get(0), accept);
     let mut segments = 0;
-    let mut previous = 0.0_f64;
+    let (mut previous, root_accept) = (0.0_f64, accept.sqrt());
     while ta < 1.0 {
         window.drop_before(ta);
         let mut best: Option<(f64, Vector2, f64)> = None;
@@ -452,21 +482,32 @@ fn march<J: Fn(f64) -> Jet2>(
             });
         }
         sink(tb, pb);
-        // The next chord's first try: this one's length, rescaled to fill the tolerance and by
-        // the trend of the density √e / h from the chord before (within 0.8–1.25).
+        // The next chord's first try: this one's length h, rescaled to fill the tolerance,
+        // 0.995 √(accept / e), and by the trend T = (√e / h) / (√e₋ / h₋) of the density from
+        // the chord before (within 0.8–1.25), within 0.5–2 in all. With q = h √e₋ / h₋,
+        // T = √e / q, so while T is within its clamp (e between 0.64 q² and 1.5625 q²) the
+        // factor is 0.995 √accept · q / e: one division and no square root between this
+        // chord's bound and the next try.
         let h = tb - ta;
-        let density = e.sqrt() / h;
-        let trend = if previous > 0.0 && density > 0.0 {
-            (density / previous).clamp(0.8, 1.25)
+        let q = h * previous;
+        let factor = if q > 0.0 && e >= 0.64 * q * q && e <= 1.5625 * q * q {
+            0.995 * root_accept * q / e
         } else {
-            1.0
+            let trend = if q > 0.0 && e < 0.64 * q * q {
+                0.8
+            } else if q > 0.0 {
+                1.25
+            } else {
+                1.0
+            };
+            0.995 * root_accept / (e.sqrt() * trend)
         };
-        previous = density;
         step = if e > 0.0 {
-            h * (0.995 * (accept / e).sqrt() / trend).clamp(0.5, 2.0)
+            h * factor.clamp(0.5, 2.0)
         } else {
             2.0 * h
         };
+        previous = e.sqrt() / h;
         (ta, pa) = (tb, pb);
     }
     Ok(segments)

@@ -44,7 +44,9 @@ impl Model {
         }
         let s = (t - self.t0) * self.inverse_span;
         let [q1, q2, q3, q4, q5] = self.q;
-        self.p0 + (q1 + (q2 + (q3 + (q4 + q5 * s) * s) * s) * s) * s
+        // Estrin's scheme: the same polynomial, half the dependent steps of Horner's.
+        let s2 = s * s;
+        self.p0 + ((q1 + q2 * s) + ((q3 + q4 * s) + q5 * s2) * s2) * s
     }
 
     /// Q − H over [a, b] ⊆ [t0, t1], H the cubic Hermite interpolant of Q at a and b (Q and Q′
@@ -80,7 +82,8 @@ impl Model {
     pub(crate) fn slope(&self, t: f64) -> Vector2 {
         let s = (t - self.t0) * self.inverse_span;
         let [d0, d1, d2, d3, d4] = self.dq;
-        d0 + (d1 + (d2 + (d3 + d4 * s) * s) * s) * s
+        let s2 = s * s;
+        (d0 + d1 * s) + ((d2 + d3 * s) + d4 * s2) * s2
     }
 }
 
@@ -189,11 +192,15 @@ pub(crate) struct ModelStream<'a, J> {
     target: f64,
     /// The most a model's remainder may be when rounding alone exceeds half of `target`.
     ceiling: f64,
-    size: f64,
     split_rounding: f64,
     drift: f64,
     min_span: f64,
     max_depth: usize,
+    /// How far B, B′ and B″ by Horner's rule move a model: its point's error, and 5/16 w and
+    /// 1/32 w² times twice the derivatives' (2n, 8n² and 32n³ ulps of the largest coordinate).
+    rounding: (f64, f64, f64),
+    /// The longest model in the current block.
+    model_span: f64,
 }
 
 /// Models per block aimed at: one O(n²) split serves about this many O(n) models.
@@ -216,6 +223,12 @@ impl<'a, J: Fn(f64) -> Jet2> ModelStream<'a, J> {
         let size = curve.iter().map(Vector2::amax).fold(0.0, f64::max);
         let (_, d1, d2) = jet(0.0);
         let at_t0 = (curve[0], d1, d2);
+        let eps = f64::EPSILON * size;
+        let rounding = (
+            4.0 * n * eps,
+            2.0 * FIRST_BASIS * 16.0 * n * n * eps,
+            2.0 * SECOND_BASIS * 64.0 * n * n * n * eps,
+        );
         Self {
             curve,
             jet,
@@ -230,11 +243,12 @@ impl<'a, J: Fn(f64) -> Jet2> ModelStream<'a, J> {
             at_t0,
             target,
             ceiling,
-            size,
             split_rounding: 8.0 * n * f64::EPSILON * size,
             drift: 0.0,
             min_span,
             max_depth,
+            rounding,
+            model_span: 0.0,
         }
     }
 
@@ -262,7 +276,7 @@ impl<'a, J: Fn(f64) -> Jet2> ModelStream<'a, J> {
             // The rounding of the block's control points, through the sixth differences.
             let span3 = span * span * span;
             let moved = 64.0 * (self.drift + self.split_rounding) * falling6(n) / (span3 * span3);
-            self.sixth = (x + moved).hypot(y + moved);
+            self.sixth = ((x + moved) * (x + moved) + (y + moved) * (y + moved)).sqrt();
             longest = (46080.0 * self.target / self.sixth).powf(1.0 / 6.0);
             // A block that would hold far more models than aimed at is split again shorter
             // (its bound on B⁽⁶⁾ covers more of the curve than its models need).
@@ -272,6 +286,17 @@ impl<'a, J: Fn(f64) -> Jet2> ModelStream<'a, J> {
             }
             self.block_span = aimed;
         };
+        // The longest model w with sixth · w⁶ / 46080 ≤ budget (the target less the rounding
+        // of a model as long as the whole block, so within the target for every shorter one).
+        let (point_rounding, tangent_rounding, curl_rounding) = self.rounding;
+        let fixed = point_rounding + span * (tangent_rounding + span * curl_rounding);
+        // Near the rounding floor the target gives way to the ceiling.
+        let budget = if fixed < 0.5 * self.target {
+            self.target - fixed
+        } else {
+            self.ceiling - fixed
+        };
+        self.model_span = (46080.0 * budget / self.sixth).powf(1.0 / 6.0);
         if !last {
             core::mem::swap(&mut self.rest, &mut self.right);
             self.drift += self.split_rounding;
@@ -298,22 +323,9 @@ impl<'a, J: Fn(f64) -> Jet2> ModelStream<'a, J> {
             self.next_block()?;
         }
         let n = (self.curve.len() - 1) as f64;
-        let eps = f64::EPSILON * self.size;
-        // B, B′ and B″ by Horner: within 2n, 8n² and 32n³ ulps; the model moves by at most the
-        // point's error plus 5/16 w and 1/32 w² times twice the derivatives'.
-        let point_rounding = 4.0 * n * eps;
-        let tangent_rounding = 2.0 * FIRST_BASIS * 16.0 * n * n * eps;
-        let curl_rounding = 2.0 * SECOND_BASIS * 64.0 * n * n * n * eps;
+        let (point_rounding, tangent_rounding, curl_rounding) = self.rounding;
         let left = self.block_end - self.t0;
-        let fixed = point_rounding + left * (tangent_rounding + left * curl_rounding);
-        // Near the rounding floor the target gives way to the ceiling.
-        let budget = if fixed < 0.5 * self.target {
-            self.target - fixed
-        } else {
-            self.ceiling - fixed
-        };
-        // The longest w with sixth · w⁶ / 46080 ≤ budget, then the block's rest in equal parts.
-        let longest = (46080.0 * budget / self.sixth).powf(1.0 / 6.0);
+        let longest = self.model_span;
         let parts = if longest > 0.0 && longest.is_finite() {
             (left / longest).ceil().max(1.0)
         } else if longest.is_nan() || longest <= 0.0 {

@@ -98,6 +98,7 @@ const SECOND_BASIS: f64 = 1.0 / 32.0;
 /// Δ = p₁ − p₀, A = Δ − e₀ − f₀/2, B = e₁ − e₀ − f₀, C = f₁ − f₀ (the conditions Q(1) = p₁,
 /// Q′(1) = e₁, Q″(1) = f₁ on q₃ + q₄ + q₅, 3q₃ + 4q₄ + 5q₅, 6q₃ + 12q₄ + 20q₅):
 /// q₁ = e₀, q₂ = f₀/2, q₃ = 10A − 4B + C/2, q₄ = −15A + 7B − C, q₅ = 6A − 3B + C/2.
+#[inline(always)]
 fn hermite(t0: f64, t1: f64, a: Jet2, b: Jet2, r: f64) -> Model {
     let w = t1 - t0;
     let inverse_span = 1.0 / w;
@@ -255,14 +256,14 @@ impl<'a, J: Fn(f64) -> Jet2> ModelStream<'a, J> {
     /// Splits the next block off `rest` and sets the next block's span from its models'
     /// length.
     fn next_block(&mut self) -> Result<(), SubdivError> {
-        if self.drift > 1e3 * self.split_rounding {
+        if self.drift > 32.0 * self.split_rounding {
             // `rest` afresh: the curve split at the block's start.
             de_casteljau_split(self.curve, self.block_start, self.left, self.rest)?;
             self.drift = 0.0;
         }
         let n = (self.curve.len() - 1) as f64;
         let remaining = 1.0 - self.block_start;
-        let (mut span, mut longest);
+        let (mut span, mut longest, mut rounding_dominates);
         let last = loop {
             let last = self.block_span >= remaining;
             span = if last { remaining } else { self.block_span };
@@ -279,9 +280,12 @@ impl<'a, J: Fn(f64) -> Jet2> ModelStream<'a, J> {
             self.sixth = ((x + moved) * (x + moved) + (y + moved) * (y + moved)).sqrt();
             longest = (46080.0 * self.target / self.sixth).powf(1.0 / 6.0);
             // A block that would hold far more models than aimed at is split again shorter
-            // (its bound on B⁽⁶⁾ covers more of the curve than its models need).
+            // (its bound on B⁽⁶⁾ covers more of the curve than its models need), unless the
+            // rounding dominates the bound: that part grows like span⁻⁶, so that the models'
+            // length it allows is a fixed fraction of the block's, however short the block.
             let aimed = MODELS_PER_BLOCK * longest;
-            if !(span > 2.0 * aimed && aimed >= self.min_span) {
+            rounding_dominates = moved >= x.max(y);
+            if rounding_dominates || !(span > 2.0 * aimed && aimed >= self.min_span) {
                 break last;
             }
             self.block_span = aimed;
@@ -303,7 +307,9 @@ impl<'a, J: Fn(f64) -> Jet2> ModelStream<'a, J> {
         }
         self.block_start += span;
         self.block_end = if last { 1.0 } else { self.block_start };
-        self.block_span = if longest.is_finite() {
+        self.block_span = if rounding_dominates {
+            2.0 * span
+        } else if longest.is_finite() {
             (longest * MODELS_PER_BLOCK).clamp(0.25 * span, 4.0 * span)
         } else {
             4.0 * span
@@ -311,13 +317,14 @@ impl<'a, J: Fn(f64) -> Jet2> ModelStream<'a, J> {
         Ok(())
     }
 
-    /// The next model, `None` once t = 1 is reached.
+    /// Writes the next model into `slot` (in place: a model is 29 numbers), `false` once t = 1
+    /// is reached.
     ///
     /// # Errors
     /// [`SubdivError::DepthLimit`] when a model would have to be shorter than 2^−`max_depth`.
-    pub(crate) fn next_model(&mut self) -> Result<Option<Model>, SubdivError> {
+    pub(crate) fn next_model(&mut self, slot: &mut Model) -> Result<bool, SubdivError> {
         if self.t0 >= 1.0 {
-            return Ok(None);
+            return Ok(false);
         }
         if self.t0 >= self.block_end {
             self.next_block()?;
@@ -360,10 +367,10 @@ impl<'a, J: Fn(f64) -> Jet2> ModelStream<'a, J> {
         let r = self.sixth * w3 * w3 / 46080.0
             + point_rounding
             + w * (tangent_rounding + w * curl_rounding);
-        let model = hermite(self.t0, t1, self.at_t0, at_t1, r);
+        *slot = hermite(self.t0, t1, self.at_t0, at_t1, r);
         self.t0 = t1;
         self.at_t0 = at_t1;
-        Ok(Some(model))
+        Ok(true)
     }
 }
 
@@ -396,7 +403,14 @@ mod tests {
             (0.5_f64.powi(40), 40),
         );
         let mut out: Vec<Model> = Vec::new();
-        while let Some(m) = stream.next_model().unwrap() {
+        let mut m = hermite(
+            0.0,
+            1.0,
+            (Vector2::zeros(), Vector2::zeros(), Vector2::zeros()),
+            (Vector2::zeros(), Vector2::zeros(), Vector2::zeros()),
+            0.0,
+        );
+        while stream.next_model(&mut m).unwrap() {
             let (t0, p0) = out.last().map_or((0.0, c.start()), |l| (l.t1, l.end));
             assert_eq!((m.t0, m.p0), (t0, p0));
             assert!(m.t1 > m.t0);

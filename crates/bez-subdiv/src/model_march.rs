@@ -8,10 +8,10 @@
 //! the curve's exact end points V₀ = P₀ = Q(0) and Vₘ = Pₙ = Q(1).
 //!
 //! A chord over [a, b] within one model: H, the cubic Hermite interpolant of Q at a and b (Q and
-//! Q′ there), is within ρ = max |Q⁗| h⁴ / 384 of Q on [a, b] (h = b − a; Q⁗ is linear, so its
-//! largest value over the model is at an end), and e ≥ the Hausdorff distance between H([a, b])
-//! and the segment [Q(a), Q(b)] comes from the closed-form chord bound of degree ≤ 3
-//! ([`chord_bound`]; H has the same ends). The chord is accepted when e + ρ + r ≤ tol. A chord
+//! Q′ there), is within ρ = k⁴/16 · max |L| of Q on [a, b] (Q − H = y²(k − y)² L(y) with L
+//! linear, [`Model::hermite_quotient`]), and e ≥ the Hausdorff distance between H([a, b]) and
+//! the segment [Q(a), Q(b)] comes in closed form when H projects monotonically onto it
+//! ([`hermite_chord`]; H has the same ends). The chord is accepted when e + ρ + r ≤ tol. A chord
 //! across models takes each model's part [u, v] in turn: its Hermite cubic Hₖ (within ρₖ of Qₖ
 //! there), whose offset from the chord line and projection onto it are cubics with exact
 //! extremes; e is then hypot(max |offset|, overshoot) / |d| plus the largest ρₖ + rₖ.

@@ -80,6 +80,7 @@ mod measure;
 mod model_march;
 mod near_optimal;
 mod optimal;
+mod order;
 mod parabola;
 mod quintic_model;
 mod split_rule;

@@ -30,6 +30,7 @@ use bez_core::{HornerBernstein, Vector2, hodograph_slice};
 use crate::bump::{bump_bound, cubic_offset};
 use crate::error::SubdivError;
 use crate::guaranteed::FlatPoint;
+use crate::order::{greater, lesser, limited};
 use crate::quintic_model::{Jet2, Model, ModelStream};
 use crate::stack_horner::{STACK_POINTS, StackHorner};
 
@@ -240,8 +241,8 @@ impl<J: Fn(f64) -> Jet2> Window<'_, J> {
                 // (|d| times); the arc point is then within hypot(offset + across, along) of
                 // the chord.
                 let (near, far, scale) = last.hermite_quotient(ta, tb);
-                let across = scale * d.perp(&near).abs().max(d.perp(&far).abs()) / len;
-                let along = scale * d.dot(&near).abs().max(d.dot(&far).abs()) / len;
+                let across = scale * greater(d.perp(&near).abs(), d.perp(&far).abs()) / len;
+                let along = scale * greater(d.dot(&near).abs(), d.dot(&far).abs()) / len;
                 let offset = e + across;
                 return ((offset * offset + along * along).sqrt() + last.r, pb);
             }
@@ -252,11 +253,11 @@ impl<J: Fn(f64) -> Jet2> Window<'_, J> {
             if m.t1 <= ta {
                 continue;
             }
-            let (u, v) = (ta.max(m.t0), tb.min(m.t1));
+            let (u, v) = (greater(ta, m.t0), lesser(tb, m.t1));
             let (pu, du) = m.jet(u);
             let (pv, dv) = m.jet(v);
             let h = v - u;
-            slack = slack.max(m.r + m.hermite_remainder(u, v));
+            slack = greater(slack, m.r + m.hermite_remainder(u, v));
             let (e0, e1, delta) = (du * h, dv * h, pv - pu);
             let (rel, a, b, c) = (
                 pu - pa,
@@ -267,22 +268,22 @@ impl<J: Fn(f64) -> Jet2> Window<'_, J> {
             if projected {
                 let cross = [d.perp(&rel), d.perp(&a), d.perp(&b), d.perp(&c)];
                 let (low, high) = cubic_range(cross, 0.0, 1.0);
-                offset = offset.max(high).max(-low);
+                offset = greater(greater(offset, high), -low);
                 let along = [d.dot(&rel), d.dot(&a), d.dot(&b), d.dot(&c)];
                 if !increasing(along, 0.0, 1.0) {
                     let (low, high) = cubic_range(along, 0.0, 1.0);
-                    lo = lo.min(low);
-                    hi = hi.max(high);
+                    lo = lesser(lo, low);
+                    hi = greater(hi, high);
                 }
             } else {
                 // A closed chord: the distance to its point, bounded term by term.
                 let reach = rel.norm() + a.norm() + b.norm() + c.norm();
-                offset = offset.max(reach);
+                offset = greater(offset, reach);
             }
         }
         let len = len2.sqrt();
         let e = if projected {
-            let overshoot = (-lo).max(hi - len2);
+            let overshoot = greater(-lo, hi - len2);
             if overshoot > 0.0 {
                 offset.hypot(overshoot) / len
             } else {
@@ -290,7 +291,7 @@ impl<J: Fn(f64) -> Jet2> Window<'_, J> {
             }
         } else {
             // Every chord point is within |d| of `pa`, a point of the arc.
-            offset.max(len)
+            greater(offset, len)
         };
         (e + slack, pb)
     }
@@ -327,7 +328,7 @@ fn hermite_chord(
     // |d| Xₐ and |d| X_b: divided by |d| once.
     let (xa, xb) = (d.perp(&da), d.perp(&db));
     // The first test before any division.
-    let quarter = 0.25 * h * xa.abs().max(xb.abs());
+    let quarter = 0.25 * h * greater(xa.abs(), xb.abs());
     if quarter <= accept * len {
         return Some(quarter / len);
     }
@@ -337,10 +338,10 @@ fn hermite_chord(
     if let Some((bump, denominator)) = bump_bound(m, -0.5 * (xa + xb), 1.0) {
         let bump = scale * bump / denominator;
         if bump <= accept || 0.25 * scale * m.abs() > accept {
-            return Some(bump.min(cheap));
+            return Some(lesser(bump, cheap));
         }
     }
-    Some((scale * cubic_offset(xa, -(xa + xb))).min(cheap))
+    Some(lesser(scale * cubic_offset(xa, -(xa + xb)), cheap))
 }
 
 /// Whether k₀ + k₁ s + k₂ s² + k₃ s³ is non-decreasing on [s0, s1], by a sufficient test
@@ -363,12 +364,12 @@ fn increasing(k: [f64; 4], s0: f64, s1: f64) -> bool {
 fn cubic_range(k: [f64; 4], s0: f64, s1: f64) -> (f64, f64) {
     let f = |s: f64| k[0] + s * (k[1] + s * (k[2] + s * k[3]));
     let (f0, f1) = (f(s0), f(s1));
-    let (mut lo, mut hi) = (f0.min(f1), f0.max(f1));
+    let (mut lo, mut hi) = (lesser(f0, f1), greater(f0, f1));
     let mut visit = |s: f64| {
         if s > s0 && s < s1 {
             let v = f(s);
-            lo = lo.min(v);
-            hi = hi.max(v);
+            lo = lesser(lo, v);
+            hi = greater(hi, v);
         }
     };
     let (qa, qb, qc) = (3.0 * k[3], 2.0 * k[2], k[1]);
@@ -437,7 +438,7 @@ fn march<J: Fn(f64) -> Jet2>(
         loop {
             let want = if ta + step >= 1.0 { 1.0 } else { ta + step };
             window.fill_to(want)?;
-            let tb = want.min(window.reach());
+            let tb = lesser(want, window.reach());
             let (e, pb) = window.bound(ta, pa, tb, accept);
             let h = tb - ta;
             if e <= accept {
@@ -448,7 +449,7 @@ fn march<J: Fn(f64) -> Jet2>(
                 // Well inside: try longer (the bound grows like h²).
                 extensions += 1;
                 let grow = if e > 0.0 {
-                    (0.995 * (accept / e).sqrt()).min(2.0)
+                    lesser(0.995 * (accept / e).sqrt(), 2.0)
                 } else {
                     2.0
                 };
@@ -465,7 +466,7 @@ fn march<J: Fn(f64) -> Jet2>(
             }
             // Also for a NaN bound: the depth limit ends the shortening.
             let shrink = if e.is_finite() {
-                (0.995 * (accept / e).sqrt()).clamp(0.3, 0.99)
+                limited(0.995 * (accept / e).sqrt(), 0.3, 0.99)
             } else {
                 0.5
             };
@@ -506,7 +507,7 @@ fn march<J: Fn(f64) -> Jet2>(
             0.995 * root_accept / (e.sqrt() * trend)
         };
         step = if e > 0.0 {
-            h * factor.clamp(0.5, 2.0)
+            h * limited(factor, 0.5, 2.0)
         } else {
             2.0 * h
         };

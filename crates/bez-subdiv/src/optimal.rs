@@ -8,6 +8,7 @@ use bez_core::{BezierCurve, BezierForm, Vector2};
 use crate::bump::{bump_bound, cubic_offset};
 use crate::error::SubdivError;
 use crate::guaranteed::FlatPoint;
+use crate::order::{greater, lesser, limited};
 use crate::parabola::ParabolaChords;
 
 /// The most segments one call places (2²⁰), checked before the first point is sent.
@@ -117,11 +118,12 @@ fn chord_bound(a: &Jet, b: &Jet, third: f64, jerk: Vector2, accept: f64) -> f64 
     let d = b.point - a.point;
     let len = d.norm();
     // In units of the chord length: α |d| = d × B″(a), γ |d| = d × B″(b); no division.
-    if len > 0.0 && d.dot(&a.d1).min(d.dot(&b.d1)) >= k * third * len {
+    let (qa, qb) = (d.dot(&a.d1), d.dot(&b.d1));
+    if len > 0.0 && qa >= k * third * len && qb >= k * third * len {
         let (alpha, gamma) = (d.perp(&a.d2), d.perp(&b.d2));
         let (big, small) = (2.0 * alpha + gamma, alpha + 2.0 * gamma);
         // |ψ| ≤ max(|A|, |A + C|) / 4 first; the exact maximum only when that fails.
-        let cheap = h * h / 24.0 * big.abs().max(small.abs());
+        let cheap = h * h / 24.0 * greater(big.abs(), small.abs());
         if cheap <= accept * len {
             return cheap / len;
         }
@@ -134,16 +136,16 @@ fn chord_bound(a: &Jet, b: &Jet, third: f64, jerk: Vector2, accept: f64) -> f64 
                 return bump / denominator;
             }
             if h * h * m.abs() > 24.0 * accept * len {
-                return (bump / denominator).min(k * a.d2.norm().max(b.d2.norm()));
+                return lesser(bump / denominator, k * greater(a.d2.norm(), b.d2.norm()));
             }
         }
         let offset = h * h / 6.0 * cubic_offset(big, gamma - alpha) / len;
         if offset <= accept {
             return offset;
         }
-        return offset.min(k * a.d2.norm().max(b.d2.norm()));
+        return lesser(offset, k * greater(a.d2.norm(), b.d2.norm()));
     }
-    let fallback = k * a.d2.norm().max(b.d2.norm());
+    let fallback = k * greater(a.d2.norm(), b.d2.norm());
     if len > 0.0 {
         let (alpha, gamma) = (d.perp(&a.d2), d.perp(&b.d2));
         let offset = h * h / 6.0 * cubic_offset(2.0 * alpha + gamma, gamma - alpha) / len;
@@ -232,11 +234,11 @@ impl<S: FnMut(FlatPoint)> March<'_, S> {
             // longer try, kept if it passes.
             if to.t < 1.0 && e < EXTEND_BELOW * accept {
                 let grow = if e > 0.0 {
-                    (0.995 * (accept / e).sqrt()).min(MAX_GROWTH)
+                    lesser(0.995 * (accept / e).sqrt(), MAX_GROWTH)
                 } else {
                     MAX_GROWTH
                 };
-                let longer = self.jet((a.t + (to.t - a.t) * grow).min(1.0));
+                let longer = self.jet(lesser(a.t + (to.t - a.t) * grow, 1.0));
                 if chord_bound(a, &longer, third, jerk, accept) <= accept {
                     to = longer;
                 }
@@ -273,7 +275,7 @@ impl<S: FnMut(FlatPoint)> March<'_, S> {
             let h = to.t - a.t;
             // Also for a NaN bound (overflowing jets): the depth limit ends the shortening.
             let shrink = if e.is_finite() {
-                (0.995 * (self.accept / e).sqrt()).clamp(0.3, 0.99)
+                limited(0.995 * (self.accept / e).sqrt(), 0.3, 0.99)
             } else {
                 0.5
             };
@@ -320,9 +322,10 @@ fn ceil_small(x: f64) -> f64 {
 fn invert_cell(r0: f64, r1: f64, w: f64, per_w: f64, mass: f64) -> f64 {
     let s = (r1 - r0) * per_w;
     // The density reached at x is √(r0² + 2 s mass) ≥ 0; the stable root of the quadratic.
-    let denominator = r0 + (r0 * r0 + 2.0 * s * mass).max(0.0).sqrt();
+    let denominator = r0 + greater(r0 * r0 + 2.0 * s * mass, 0.0).sqrt();
     if denominator > 0.0 {
-        (2.0 * mass / denominator).clamp(0.0, w)
+        // ≥ 0: mass ≥ 0 and the denominator > 0.
+        lesser(2.0 * mass / denominator, w)
     } else {
         0.0
     }
@@ -357,7 +360,7 @@ impl Cumulative<'_> {
             self.cell += 1;
         }
         let (a, b) = (self.nodes[self.cell - 1], self.nodes[self.cell]);
-        let x = (t - a.t).clamp(0.0, b.t - a.t);
+        let x = limited(t - a.t, 0.0, b.t - a.t);
         let w = b.t - a.t;
         let slope = if w > 0.0 {
             (b.density - a.density) / w
@@ -376,8 +379,11 @@ impl Cumulative<'_> {
             self.cell += 1;
         }
         let (a, b) = (self.nodes[self.cell - 1], self.nodes[self.cell]);
-        let mass = (target - a.mass).max(0.0);
-        (a.t + invert_cell(a.density, b.density, b.t - a.t, self.per_cell, mass)).min(1.0)
+        let mass = greater(target - a.mass, 0.0);
+        lesser(
+            a.t + invert_cell(a.density, b.density, b.t - a.t, self.per_cell, mass),
+            1.0,
+        )
     }
 }
 
@@ -403,7 +409,7 @@ fn place<S: FnMut(FlatPoint)>(
         });
     }
     // 1 ≤ estimate < 2²⁰.
-    let step = total / ceil_small(raw).max(1.0);
+    let step = total / greater(ceil_small(raw), 1.0);
     let end = total * (1.0 - 1e-9);
     let last = march.last;
     let mut cumulative = Cumulative {
@@ -501,8 +507,11 @@ fn optimal_bezier(
     let (mut first, mut last) = (power.jet(0.0), power.jet(1.0));
     first.point = start;
     last.point = end;
-    let cells = ceil_small(work.wang_steps * NODES_PER_WANG_STEP).clamp(1.0, MAX_CUBIC_CELLS as f64)
-        as usize;
+    let cells = limited(
+        ceil_small(work.wang_steps * NODES_PER_WANG_STEP),
+        1.0,
+        MAX_CUBIC_CELLS as f64,
+    ) as usize;
     let mut march = March {
         power: &power,
         sink,

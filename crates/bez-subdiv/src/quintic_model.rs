@@ -5,6 +5,7 @@
 use bez_core::{Vector2, de_casteljau_split};
 
 use crate::error::SubdivError;
+use crate::order::greater;
 
 /// B, B′ and B″ at a parameter.
 pub(crate) type Jet2 = (Vector2, Vector2, Vector2);
@@ -74,7 +75,7 @@ impl Model {
     #[inline(always)]
     pub(crate) fn hermite_remainder(&self, a: f64, b: f64) -> f64 {
         let (near, far, scale) = self.hermite_quotient(a, b);
-        scale * near.dot(&near).max(far.dot(&far)).sqrt()
+        scale * greater(near.dot(&near), far.dot(&far)).sqrt()
     }
 
     /// Q′ in t at the curve parameter t in [t0, t1].
@@ -125,7 +126,7 @@ fn hermite(t0: f64, t1: f64, a: Jet2, b: Jet2, r: f64) -> Model {
         ],
         end: p1,
         r,
-        quartic: q4.norm().max((q4 + q5 * 5.0).norm()),
+        quartic: greater(q4.norm(), (q4 + q5 * 5.0).norm()),
     }
 }
 
@@ -137,8 +138,8 @@ fn sixth_derivative_bound(q: &[Vector2], span: f64) -> (f64, f64) {
     let (mut x, mut y) = (0.0_f64, 0.0_f64);
     for w in q.windows(7) {
         let d = (w[0] + w[6]) - (w[1] + w[5]) * 6.0 + (w[2] + w[4]) * 15.0 - w[3] * 20.0;
-        x = x.max(d.x().abs());
-        y = y.max(d.y().abs());
+        x = greater(x, d.x().abs());
+        y = greater(y, d.y().abs());
     }
     let span3 = span * span * span;
     let scale = falling6(n) / (span3 * span3);

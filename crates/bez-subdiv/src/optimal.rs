@@ -149,7 +149,8 @@ fn chord_bound(a: &Jet, b: &Jet, third: f64, jerk: Vector2, accept: f64) -> f64 
     if len > 0.0 {
         let (alpha, gamma) = (d.perp(&a.d2), d.perp(&b.d2));
         let offset = h * h / 6.0 * cubic_offset(2.0 * alpha + gamma, gamma - alpha) / len;
-        offset.hypot(overshoot(a, &d, len, h, jerk)).min(fallback)
+        let beyond = overshoot(a, &d, len, h, jerk);
+        lesser((offset * offset + beyond * beyond).sqrt(), fallback)
     } else {
         fallback
     }

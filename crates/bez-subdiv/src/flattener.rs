@@ -17,7 +17,7 @@ use crate::wang::{flatten_wang, flatten_wang_small};
 /// | method | segments / N* (random cubics, tol = 1e-3 × size) | cost | use it for |
 /// |---|---|---|---|
 /// | [`Fast`](Method::Fast) | about 2 | fastest: no subdivision, a few flops per point (about 0.1 × kurbo's `flatten`) | rendering, hit testing, anything per frame |
-/// | [`Optimal`](Method::Optimal) | median 1.05, 90th percentile 1.10 | about kurbo's `flatten` on cubics (0.95–1.0 × its time on random cubics on a quiet machine, 0.84–0.89 × on adversarial ones); 0.08–0.1 µs per point at degree 25 | output that is stored or sent (fewest points) |
+/// | [`Optimal`](Method::Optimal) | median 1.05, 90th percentile 1.10 | below kurbo's `flatten` on cubics (0.84–0.88 × its time on random cubics on a quiet machine, 0.78 × on adversarial ones); about 0.08 µs per point at degree 25 | output that is stored or sent (fewest points) |
 /// | [`LocalWang`](Method::LocalWang) | 1.6–2.0 | one halving per up to 16 points | high degrees |
 /// | [`Halving`](Method::Halving) | about 1.7 | one de Casteljau halving per segment | — |
 /// | [`PaperRule`](Method::PaperRule) | — | — | reproducing Ma, Lin & Shen's Table 1 only: **no guarantee** |

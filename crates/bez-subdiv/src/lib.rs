@@ -12,7 +12,7 @@
 //! | method | guarantee | segments / N* (random cubics, tol = 1e-3 × size) | cost |
 //! |---|---|---|---|
 //! | [`Method::Fast`] (default) | Hausdorff ≤ tol | about 2 (Wang's count, lyon_geom's) | a few flops per point, no subdivision |
-//! | [`Method::Optimal`] | Hausdorff ≤ tol | median 1.05, 90th percentile 1.10 | about kurbo's `flatten` on cubics (0.95–1.0 × its time on random ones on a quiet machine); above degree 3 O(1) per point, O(n) per quintic model, 0.08–0.1 µs per point at degree 25 (medians 1.07–1.09 N* there at 1e-3 × size, 1.01–1.03 at 1e-5) |
+//! | [`Method::Optimal`] | Hausdorff ≤ tol | median 1.05, 90th percentile 1.10 | below kurbo's `flatten` on cubics (0.84–0.88 × its time on random ones on a quiet machine); above degree 3 O(1) per point, O(n) per quintic model, about 0.08 µs per point at degree 25 (medians 1.07–1.09 N* there at 1e-3 × size, 1.01–1.03 at 1e-5) |
 //! | [`Method::LocalWang`] | Hausdorff ≤ tol | 1.6–2.0 | one halving per up to 16 points |
 //! | [`Method::Halving`] | Hausdorff ≤ tol | about 1.7 | one halving per segment |
 //! | [`Method::PaperRule`] | **none** (eq. (3) on degenerate input: 2,007 × tol) | — | reproduction of Table 1 |
